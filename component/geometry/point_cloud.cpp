@@ -1,0 +1,66 @@
+#include "geometry/point_cloud.hpp"
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace peristep {
+
+void validate(const GridSpec& s) {
+  require(s.nx >= 2 && s.ny >= 2, "empty domain: nx and ny must both be at least 2 (got nx = " +
+                                      std::to_string(s.nx) + ", ny = " + std::to_string(s.ny) + ")");
+  require(std::isfinite(s.Lx) && std::isfinite(s.Ly) && s.Lx > 0 && s.Ly > 0,
+          "empty domain: Lx and Ly must be positive and finite");
+  const double hx = s.Lx / static_cast<double>(s.nx - 1), hy = s.Ly / static_cast<double>(s.ny - 1);
+  require(std::abs(hx - hy) <= 1e-9 * hx, "grid spacing must be uniform: Lx/(nx-1) = " + std::to_string(hx) +
+                                              " but Ly/(ny-1) = " + std::to_string(hy));
+  require(std::isfinite(s.deltaOverH) && s.deltaOverH >= 1.0,
+          "horizon smaller than the grid spacing: deltaOverH must be >= 1 (got " + std::to_string(s.deltaOverH) + ")");
+  require(std::isfinite(s.jitter) && s.jitter >= 0.0 && s.jitter < 0.5,
+          "jitter must lie in [0, 0.5) grid spacings (got " + std::to_string(s.jitter) + ")");
+  const double points = static_cast<double>(s.nx) * static_cast<double>(s.ny);
+  require(points < 2e8, "grid too large: nx*ny = " + std::to_string(points));
+}
+
+PointCloud makeRectangle(const GridSpec& spec) {
+  validate(spec);
+  PointCloud c;
+  c.h = spec.h();
+  c.delta = spec.delta();
+  c.nx = spec.nx;
+  c.ny = spec.ny;
+  // 000 Sec. 2.1: u is prescribed on BBOmega, a collar of thickness 2*delta.
+  c.layers = spec.collar ? static_cast<std::size_t>(std::ceil(2.0 * spec.deltaOverH - 1e-9)) : 0;
+  const std::size_t gx = c.nx + 2 * c.layers, gy = c.ny + 2 * c.layers;
+  const std::size_t n = gx * gy;
+  c.x.resize(n);
+  c.y.resize(n);
+  c.image.assign(n, -1);
+  c.domain.reserve(c.nx * c.ny);
+
+  std::mt19937_64 rng(spec.seed);
+  const auto uniform = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53 * 2.0 - 1.0; };
+  const double x0 = -0.5 * spec.Lx, y0 = -0.5 * spec.Ly;
+  const auto L = static_cast<std::int64_t>(c.layers);
+  for (std::size_t gj = 0; gj < gy; ++gj) {
+    for (std::size_t gi = 0; gi < gx; ++gi) {
+      const std::size_t p = gj * gx + gi;
+      const auto ix = static_cast<std::int64_t>(gi) - L, iy = static_cast<std::int64_t>(gj) - L;
+      c.x[p] = x0 + static_cast<double>(ix) * c.h;
+      c.y[p] = y0 + static_cast<double>(iy) * c.h;
+      if (spec.jitter > 0) {
+        c.x[p] += spec.jitter * c.h * uniform();
+        c.y[p] += spec.jitter * c.h * uniform();
+      }
+      if (ix >= 0 && iy >= 0 && ix < static_cast<std::int64_t>(c.nx) && iy < static_cast<std::int64_t>(c.ny)) {
+        c.image[p] = iy * static_cast<std::int64_t>(c.nx) + ix;
+        c.domain.push_back(p);
+      }
+    }
+  }
+  return c;
+}
+
+}  // namespace peristep

@@ -1,0 +1,41 @@
+#pragma once
+// Point clouds on a rectangular domain with a Dirichlet collar (000 Sec. 2.1, Sec. 3.1).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace peristep {
+
+// A rectangle [-Lx/2, Lx/2] x [-Ly/2, Ly/2] sampled with nx x ny points on grid vertices
+// (spacing h = Lx/(nx-1) = Ly/(ny-1)), surrounded by a collar of at least 2*delta.
+struct GridSpec {
+  std::size_t nx = 0, ny = 0;
+  double Lx = 1.0, Ly = 1.0;
+  double deltaOverH = 3.0;
+  double jitter = 0.0;       // random displacement of every point, as a fraction of h (quasi-uniform cloud)
+  std::uint64_t seed = 1;    // seed of the jitter
+  bool collar = true;        // false: the domain alone (free boundaries on all sides)
+
+  double h() const { return Lx / static_cast<double>(nx - 1); }
+  double delta() const { return deltaOverH * h(); }
+};
+
+// Throws InvalidInput with a precise message when the spec cannot describe a valid cloud.
+void validate(const GridSpec& spec);
+
+// Points stored as structure of arrays; the full grid, collar included, is numbered row-major.
+struct PointCloud {
+  double h = 0.0, delta = 0.0;
+  std::size_t nx = 0, ny = 0;        // domain points per side
+  std::size_t layers = 0;            // collar layers on each side
+  std::vector<double> x, y;
+  std::vector<std::int64_t> image;   // per point: index into the [ny][nx] domain image, -1 in the collar
+  std::vector<std::size_t> domain;   // point ids of the domain points, in image order
+
+  std::size_t size() const { return x.size(); }
+  bool inDomain(std::size_t p) const { return image[p] >= 0; }
+};
+
+PointCloud makeRectangle(const GridSpec& spec);
+
+}  // namespace peristep

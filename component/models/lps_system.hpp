@@ -1,0 +1,39 @@
+#pragma once
+// The discrete heterogeneous LPS system in (u, theta), 000:(3.1)-(3.2) with the sign of 000:(2.5).
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+#include "core/csr_matrix.hpp"
+#include "geometry/neighbours.hpp"
+#include "geometry/point_cloud.hpp"
+
+namespace peristep {
+
+// Scaled kernel 000:(4.2), normalized so that int K z z^T dz = I (theta = div u for linear u).
+inline double lpsKernel(double r, double delta) { return 3.0 / (std::numbers::pi * delta * delta * delta * r); }
+
+// Unknowns: u on the domain points, theta on the domain and on every collar point within delta of it;
+// u on the rest of the collar is prescribed (000 Sec. 2.1). Numbered point by point (u_x, u_y, theta)
+// so that the matrix keeps the locality of the cloud.
+struct DofMap {
+  std::vector<std::int64_t> u;      // per point: index of u_x (u_y follows), -1 where u is prescribed
+  std::vector<std::int64_t> theta;  // per point: index of theta, -1 where theta is not needed
+  std::int64_t size = 0;
+
+  std::vector<char> thetaPoints() const;  // 1 where theta is an unknown
+};
+DofMap numberDofs(const PointCloud& cloud, const Neighbours& nb);
+
+// The linear system A x = b - B g, where g holds the prescribed displacements of all points
+// (g[2p], g[2p+1]); B has one column per point component and is zero on unknown components.
+struct LpsSystem {
+  CsrMatrix A;  // unknown columns
+  CsrMatrix B;  // prescribed columns (size dofs x 2*points)
+};
+
+// lambda, mu: per point (collar included); w: quadrature weights aligned with nb.
+LpsSystem assembleLps(const PointCloud& cloud, const Neighbours& nb, const std::vector<double>& w,
+                      const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& dofs);
+
+}  // namespace peristep

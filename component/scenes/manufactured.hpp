@@ -1,0 +1,37 @@
+#pragma once
+// Scenes with an exact local solution: 000 Sec. 4.1 (Test 1) and 000 Sec. 4.2 (Test 2).
+#include "scenes/elastic_scene.hpp"
+
+namespace peristep {
+
+// Test 1: E = (2 + sin x sin y)(2 + sin 5 xi), u0 = (sin x sin y, -cos x cos y)/(2 + sin 5 xi),
+// f = -div sigma(u0) (the printed formula is +div sigma, see DESIGN 5.1); f does not depend on xi.
+class SmoothScene final : public ElasticScene {
+ public:
+  SmoothScene(double nu, double xi);
+  double poissonRatio() const override { return nu_; }
+  double youngsModulus(double x, double y) const override;
+  Vec2 bodyForce(double x, double y) const override;
+  Vec2 displacement(double x, double y) const override;
+
+ private:
+  double nu_, s_;  // s_ = 2 + sin(5 xi)
+};
+
+// Test 2 with the corrected displacement of DESIGN 5.4: S = 3 + sin xi1 + sin xi2,
+// E = S for x < 0 and contrast*S for x >= 0 (the paper has contrast = 2), f = 0,
+// u0 = (3x, -x)/S on the left and (3x, -x)/(contrast*S) on the right: traction and displacement are
+// continuous across x = 0.
+class CompositeScene final : public ElasticScene {
+ public:
+  CompositeScene(double nu, double xi1, double xi2, double contrast = 2.0);
+  double poissonRatio() const override { return nu_; }
+  double youngsModulus(double x, double y) const override;
+  Vec2 bodyForce(double, double) const override { return {0.0, 0.0}; }
+  Vec2 displacement(double x, double y) const override;
+
+ private:
+  double nu_, s_, contrast_;
+};
+
+}  // namespace peristep

@@ -1,0 +1,49 @@
+#pragma once
+// Quasi-static heterogeneous LPS without fracture: assemble once, factorize once, solve per load.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "models/lps_discretization.hpp"
+#include "scenes/elastic_scene.hpp"
+#include "solvers/linear_solver.hpp"
+
+namespace peristep {
+
+struct StaticTimes {
+  double assembly = 0, factorization = 0, solve = 0;
+};
+
+class StaticLps {
+ public:
+  // Evaluates the material on every point (rejecting E <= 0 with the offending location), assembles
+  // the (u, theta) system and factorizes it.
+  StaticLps(std::shared_ptr<const LpsDiscretization> disc, const ElasticScene& scene,
+            const std::string& solverName = "umfpack");
+
+  // Displacement for body force and collar data scaled by loadFactor (the problem is linear).
+  void solve(double loadFactor = 1.0);
+
+  const LpsDiscretization& discretization() const { return *disc_; }
+  std::int64_t unknowns() const { return disc_->dofs.size; }
+  const StaticTimes& times() const { return times_; }
+  // Displacement on the domain points, in image order [ny][nx].
+  const std::vector<double>& ux() const { return ux_; }
+  const std::vector<double>& uy() const { return uy_; }
+  // sqrt(sum_i |u_i - s u0(x_i)|^2 h^2) over the domain points against the scene's displacement u0
+  // scaled by the load factor s: of the last solve, or of a given field.
+  double errorL2() const { return errorL2At(ux_, uy_, load_); }
+  double errorL2At(const std::vector<double>& ux, const std::vector<double>& uy, double loadFactor) const;
+
+ private:
+  std::shared_ptr<const LpsDiscretization> disc_;
+  const ElasticScene& scene_;
+  LpsSystem system_;
+  std::vector<double> rhs0_;  // f - B g for loadFactor = 1
+  std::unique_ptr<LinearSolver> solver_;
+  StaticTimes times_;
+  double load_ = 0;
+  std::vector<double> ux_, uy_;
+};
+
+}  // namespace peristep
