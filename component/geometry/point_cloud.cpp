@@ -38,6 +38,7 @@ PointCloud makeRectangle(const GridSpec& spec) {
   c.x.resize(n);
   c.y.resize(n);
   c.image.assign(n, -1);
+  c.region.assign(n, Region::Dirichlet);
   c.domain.reserve(c.nx * c.ny);
 
   std::mt19937_64 rng(spec.seed);
@@ -56,11 +57,22 @@ PointCloud makeRectangle(const GridSpec& spec) {
       }
       if (ix >= 0 && iy >= 0 && ix < static_cast<std::int64_t>(c.nx) && iy < static_cast<std::int64_t>(c.ny)) {
         c.image[p] = iy * static_cast<std::int64_t>(c.nx) + ix;
+        c.region[p] = Region::Domain;
         c.domain.push_back(p);
       }
     }
   }
   return c;
+}
+
+void PointCloud::freeSideEdges() {
+  const std::size_t gx = nx + 2 * layers;
+  for (std::size_t p = 0; p < size(); ++p) {
+    const std::size_t gi = p % gx, gj = p / gx;
+    const bool besideRows = gj >= layers && gj < layers + ny;
+    const bool outsideColumns = gi < layers || gi >= layers + nx;
+    if (besideRows && outsideColumns) region[p] = Region::Void;
+  }
 }
 
 }  // namespace peristep

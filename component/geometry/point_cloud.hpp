@@ -23,6 +23,10 @@ struct GridSpec {
 // Throws InvalidInput with a precise message when the spec cannot describe a valid cloud.
 void validate(const GridSpec& spec);
 
+// Where a point sits: in the domain (unknown u), in the Dirichlet collar (prescribed u), or in the
+// collar beyond a free edge (no material: its bonds are broken from the start, 000 Sec. 3.3).
+enum class Region : std::uint8_t { Domain, Dirichlet, Void };
+
 // Points stored as structure of arrays; the full grid, collar included, is numbered row-major.
 struct PointCloud {
   double h = 0.0, delta = 0.0;
@@ -31,9 +35,15 @@ struct PointCloud {
   std::vector<double> x, y;
   std::vector<std::int64_t> image;   // per point: index into the [ny][nx] domain image, -1 in the collar
   std::vector<std::size_t> domain;   // point ids of the domain points, in image order
+  std::vector<Region> region;
 
   std::size_t size() const { return x.size(); }
-  bool inDomain(std::size_t p) const { return image[p] >= 0; }
+  bool inDomain(std::size_t p) const { return region[p] == Region::Domain; }
+  bool isVoid(std::size_t p) const { return region[p] == Region::Void; }
+
+  // Collar points beside the left/right edges (within the domain's y range) become Void: those edges
+  // are free. The corner blocks stay with the top and bottom collars.
+  void freeSideEdges();
 };
 
 PointCloud makeRectangle(const GridSpec& spec);

@@ -1,6 +1,7 @@
 #include "models/lps_system.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <omp.h>
 
 #include "models/lps_material.hpp"
@@ -17,7 +18,8 @@ DofMap numberDofs(const PointCloud& c, const Neighbours& nb) {
   std::vector<char> needsTheta(c.size(), 0);
   for (std::size_t p : c.domain) {
     needsTheta[p] = 1;
-    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) needsTheta[nb.index[k]] = 1;
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k)
+      if (!c.isVoid(nb.index[k])) needsTheta[nb.index[k]] = 1;
   }
   DofMap d;
   d.u.assign(c.size(), -1);
@@ -80,13 +82,63 @@ void addU(RowBuffer& row, const DofMap& d, std::size_t q, int comp, double v) {
     row.prescribed.emplace_back(2 * static_cast<std::int64_t>(q) + comp, v);
 }
 
+// Free-surface geometry of one point, 000:(3.21)-(3.22): the correction tensor M (pseudo-inverse when
+// singular, e.g. an isolated point) and the outward normal n with its tangent t.
+struct SurfaceFrame {
+  double M[2][2] = {{1, 0}, {0, 1}};
+  double n[2] = {0, 0}, t[2] = {0, 0};
+  bool broken = false;  // any broken bond at this point
+};
+
+SurfaceFrame surfaceFrame(const PointCloud& c, const Neighbours& nb, const std::vector<double>& w,
+                          const std::vector<std::uint8_t>* intact, std::size_t p) {
+  SurfaceFrame f;
+  if (!intact) return f;
+  double S[2][2] = {{0, 0}, {0, 0}}, m[2] = {0, 0};
+  for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
+    if (!(*intact)[k]) {
+      f.broken = true;
+      continue;
+    }
+    const std::uint32_t q = nb.index[k];
+    const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
+    const double Kw = lpsKernel(std::hypot(z[0], z[1]), c.delta) * w[k];
+    for (int a = 0; a < 2; ++a) {
+      m[a] += z[a] * w[k];
+      for (int b = 0; b < 2; ++b) S[a][b] += Kw * z[a] * z[b];
+    }
+  }
+  if (!f.broken) return f;  // full neighbourhood: M = I exactly (the weights integrate K z z^T)
+  // Symmetric 2x2 pseudo-inverse; S is O(1) (it is I for a full neighbourhood).
+  const double tr = S[0][0] + S[1][1], det = S[0][0] * S[1][1] - S[0][1] * S[1][0];
+  const double disc = std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
+  const double l1 = 0.5 * tr + disc, l2 = 0.5 * tr - disc;
+  double v1[2] = {S[0][1], l1 - S[0][0]};
+  if (std::hypot(v1[0], v1[1]) < 1e-14) v1[0] = 1, v1[1] = 0;
+  const double nv = std::hypot(v1[0], v1[1]);
+  v1[0] /= nv, v1[1] /= nv;
+  const double v2[2] = {-v1[1], v1[0]};
+  const double tol = 1e-10;
+  const double i1 = l1 > tol ? 1 / l1 : 0, i2 = l2 > tol ? 1 / l2 : 0;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) f.M[a][b] = i1 * v1[a] * v1[b] + i2 * v2[a] * v2[b];
+  const double mn = std::hypot(m[0], m[1]);
+  if (mn > 1e-12 * c.delta * c.delta * c.delta) {  // 000:(3.22): n points away from the intact bonds
+    f.n[0] = -m[0] / mn, f.n[1] = -m[1] / mn;
+    f.t[0] = -f.n[1], f.t[1] = f.n[0];
+  }
+  return f;
+}
+
 }  // namespace
 
 LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vector<double>& w,
-                      const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& d) {
+                      const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& d,
+                      const std::vector<std::uint8_t>* intact) {
   const int threads = omp_get_max_threads();
   std::vector<CsrPiece> piecesA(static_cast<std::size_t>(threads)), piecesB(static_cast<std::size_t>(threads));
   const std::size_t n = c.size();
+  const auto gamma = [&](std::size_t k) { return intact ? static_cast<double>((*intact)[k]) : 1.0; };
 
 #pragma omp parallel num_threads(threads)
   {
@@ -95,19 +147,32 @@ LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vect
     const std::size_t last = n * (t + 1) / static_cast<std::size_t>(threads);
     RowBuffer row;
     for (std::size_t p = first; p < last; ++p) {
+      if (d.u[p] < 0 && d.theta[p] < 0) continue;
+      const SurfaceFrame frame = surfaceFrame(c, nb, w, intact, p);
       if (d.u[p] >= 0) {
-        // Momentum balance at a domain point, DESIGN 5.1 / 000:(2.5):
-        // -sum (lambda-mu)_pj K w (x_j-x_p)(theta_p+theta_j) - 8 sum mu_pj K w z z^T/|z|^2 (u_j-u_p) = f_p
+        // Momentum balance at a domain point, 000:(3.19) with the sign of 000:(2.5) (DESIGN 5.1):
+        //   sum_j K [ -(lambda-mu)_pj z (theta_p+theta_j) - 8 mu_pj z z^T/|z|^2 (u_j-u_p) ] w~_pj
+        // + theta_p sum_j K [ -2(lambda-mu) z - 4(lambda+2mu) n (z.n)(z.t)^2/|z|^2
+        //                     + 4 lambda n (z.n)^3/|z|^2 ] w^_pj = f_p,   z = x_j - x_p.
         for (int a = 0; a < 2; ++a) {
           row.clear();
           double selfU[2] = {0.0, 0.0}, selfTheta = 0.0;
           for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
             const std::uint32_t q = nb.index[k];
+            if (c.isVoid(q) && !frame.broken) continue;
             const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
             const double r2 = z[0] * z[0] + z[1] * z[1];
-            const double Kw = lpsKernel(std::sqrt(r2), c.delta) * w[k];
-            const double dil = (harmonicMean(lambda[p], lambda[q]) - harmonicMean(mu[p], mu[q])) * Kw * z[a];
-            const double shear = 8.0 * harmonicMean(mu[p], mu[q]) * Kw * z[a] / r2;
+            const double K = lpsKernel(std::sqrt(r2), c.delta);
+            const double lam = harmonicMean(lambda[p], lambda[q]), m = harmonicMean(mu[p], mu[q]);
+            const double g = gamma(k), Kw = K * w[k] * g, Kwb = K * w[k] * (1.0 - g);
+            if (Kwb != 0.0) {
+              const double zn = z[0] * frame.n[0] + z[1] * frame.n[1], zt = z[0] * frame.t[0] + z[1] * frame.t[1];
+              selfTheta += Kwb * (-2.0 * (lam - m) * z[a] - 4.0 * (lam + 2.0 * m) * frame.n[a] * zn * zt * zt / r2 +
+                                  4.0 * lam * frame.n[a] * zn * zn * zn / r2);
+            }
+            if (c.isVoid(q)) continue;  // no unknowns there: only the free-surface term above
+            const double dil = (lam - m) * Kw * z[a];
+            const double shear = 8.0 * m * Kw * z[a] / r2;
             row.unknown.emplace_back(d.theta[q], -dil);
             selfTheta -= dil;
             for (int b = 0; b < 2; ++b) {
@@ -123,16 +188,18 @@ LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vect
         }
       }
       if (d.theta[p] >= 0) {
-        // Nonlocal dilatation, 000:(3.2): theta_p - sum K w (x_j-x_p).(u_j-u_p) = 0.
+        // Corrected nonlocal dilatation, 000:(3.20): theta_p - sum K (x_j-x_p).M_p (u_j-u_p) w~ = 0.
         row.clear();
         double selfU[2] = {0.0, 0.0};
         for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
           const std::uint32_t q = nb.index[k];
+          if (c.isVoid(q)) continue;
           const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
-          const double Kw = lpsKernel(std::hypot(z[0], z[1]), c.delta) * w[k];
+          const double Kw = lpsKernel(std::hypot(z[0], z[1]), c.delta) * w[k] * gamma(k);
+          const double Mz[2] = {frame.M[0][0] * z[0] + frame.M[0][1] * z[1], frame.M[1][0] * z[0] + frame.M[1][1] * z[1]};
           for (int b = 0; b < 2; ++b) {
-            addU(row, d, q, b, -Kw * z[b]);
-            selfU[b] += Kw * z[b];
+            addU(row, d, q, b, -Kw * Mz[b]);
+            selfU[b] += Kw * Mz[b];
           }
         }
         addU(row, d, p, 0, selfU[0]);

@@ -33,7 +33,12 @@ struct LpsSystem {
 };
 
 // lambda, mu: per point (collar included); w: quadrature weights aligned with nb.
+// intact: bond state gamma per CSR entry (000:(3.17)), or null when nothing can break. With it, the
+// free-surface terms of 000:(3.19)-(3.22) apply at every point that has a broken bond. Bonds to Void
+// points add no entries; other broken bonds keep (zero) entries, so the sparsity pattern, and with it the
+// symbolic factorization, never changes while bonds break.
 LpsSystem assembleLps(const PointCloud& cloud, const Neighbours& nb, const std::vector<double>& w,
-                      const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& dofs);
+                      const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& dofs,
+                      const std::vector<std::uint8_t>* intact = nullptr);
 
 }  // namespace peristep

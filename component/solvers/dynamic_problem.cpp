@@ -1,0 +1,87 @@
+#include "solvers/dynamic_problem.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace peristep {
+
+DynamicProblem::DynamicProblem(ForceModel& model, double density) : model_(model), density_(density) {
+  require(std::isfinite(density) && density > 0, "dynamic problem: density must be positive");
+  require(model.points() > 0, "dynamic problem: the model has no points");
+  prescribed_.assign(dofs(), 0);
+  velocity_.assign(dofs(), 0.0);
+  u0_.assign(dofs(), 0.0);
+  v0_.assign(dofs(), 0.0);
+}
+
+void DynamicProblem::prescribeVelocity(const std::vector<std::uint32_t>& dofs, double velocity) {
+  require(std::isfinite(velocity), "dynamic problem: prescribed velocity must be finite");
+  for (const std::uint32_t d : dofs) {
+    require(d < this->dofs(), "dynamic problem: prescribed dof " + std::to_string(d) + " out of range");
+    prescribed_[d] = 1;
+    velocity_[d] = velocity;
+    v0_[d] = velocity;
+  }
+}
+
+void DynamicProblem::setBodyForce(std::vector<double> profile, std::function<double(double)> amplitude) {
+  require(profile.size() == dofs(), "dynamic problem: body force profile needs one value per dof");
+  require(static_cast<bool>(amplitude), "dynamic problem: body force needs an amplitude function");
+  bodyProfile_ = std::move(profile);
+  amplitude_ = std::move(amplitude);
+}
+
+void DynamicProblem::setInitialState(std::vector<double> u0, std::vector<double> v0) {
+  require(u0.size() == dofs() && v0.size() == dofs(), "dynamic problem: initial state needs 2 values per point");
+  for (std::size_t d = 0; d < dofs(); ++d) {
+    require(std::isfinite(u0[d]) && std::isfinite(v0[d]), "dynamic problem: initial state must be finite");
+    if (prescribed_[d]) v0[d] = velocity_[d];
+  }
+  u0_ = std::move(u0);
+  v0_ = std::move(v0);
+}
+
+void DynamicProblem::acceleration(double t, const double* u, double* f, double* a) {
+  model_.force(u, f);
+  const double amp = bodyAmplitude(t), inv = 1.0 / density_;
+  const std::size_t n = dofs();
+  const double* b = bodyProfile_.empty() ? nullptr : bodyProfile_.data();
+  for (std::size_t d = 0; d < n; ++d)
+    a[d] = prescribed_[d] ? 0.0 : inv * (f[d] + (b ? amp * b[d] : 0.0));
+}
+
+void DynamicProblem::accelerationDerivative(const double* u, const double* du, double* da) {
+  model_.forceDerivative(u, du, da);
+  const double inv = 1.0 / density_;
+  for (std::size_t d = 0; d < dofs(); ++d) da[d] = prescribed_[d] ? 0.0 : inv * da[d];
+}
+
+void DynamicProblem::applyPrescribed(double t, double* u, double* v) const {
+  for (std::size_t d = 0; d < dofs(); ++d)
+    if (prescribed_[d]) {
+      u[d] = u0_[d] + velocity_[d] * t;
+      v[d] = velocity_[d];
+    }
+}
+
+double DynamicProblem::externalPower(double t, const double* f, const double* v) const {
+  const double amp = bodyAmplitude(t);
+  double p = 0;
+  for (std::size_t d = 0; d < dofs(); ++d) {
+    if (prescribed_[d])
+      p -= model_.pointVolume(d / 2) * f[d] * v[d];
+    else if (!bodyProfile_.empty())
+      p += model_.pointVolume(d / 2) * amp * bodyProfile_[d] * v[d];
+  }
+  return p;
+}
+
+double DynamicProblem::kineticEnergy(const double* v) const {
+  double e = 0;
+  for (std::size_t d = 0; d < dofs(); ++d) e += model_.pointVolume(d / 2) * v[d] * v[d];
+  return 0.5 * density_ * e;
+}
+
+}  // namespace peristep

@@ -1,0 +1,58 @@
+#pragma once
+// The semi-discrete equation of motion rho u'' = L(u) + b(t) (001:(12), (30)) on a point cloud, with
+// prescribed-velocity boundary dofs and a separable body force. Shared by every time integrator.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "solvers/force_model.hpp"
+
+namespace peristep {
+
+class DynamicProblem {
+ public:
+  DynamicProblem(ForceModel& model, double density);
+
+  // Dofs (2 p + component) moving at a constant velocity: u(t) = u(0) + velocity t (velocity 0 holds them).
+  void prescribeVelocity(const std::vector<std::uint32_t>& dofs, double velocity);
+  // b(x_p, t) = amplitude(t) * profile[dof] [N/m^3].
+  void setBodyForce(std::vector<double> profile, std::function<double(double)> amplitude);
+  // Initial displacement and velocity (interleaved, 2 N each); prescribed dofs take their own velocity.
+  void setInitialState(std::vector<double> u0, std::vector<double> v0);
+
+  ForceModel& model() { return model_; }
+  std::size_t dofs() const { return 2 * model_.points(); }
+  double density() const { return density_; }
+  const std::vector<char>& prescribed() const { return prescribed_; }   // 1 on prescribed dofs
+  const std::vector<double>& prescribedVelocity() const { return velocity_; }
+  const std::vector<double>& initialDisplacement() const { return u0_; }
+  const std::vector<double>& initialVelocity() const { return v0_; }
+
+  // f = L(u); a = (f + b(t))/rho on free dofs and 0 on prescribed ones.
+  void acceleration(double t, const double* u, double* f, double* a);
+  // da = (dL/du du)/rho on free dofs, 0 on prescribed ones.
+  void accelerationDerivative(const double* u, const double* du, double* da);
+  // Prescribed dofs of (u, v) set to their values at time t.
+  void applyPrescribed(double t, double* u, double* v) const;
+  // Rate of work of the body force and of the reactions that hold the prescribed dofs on their path:
+  // P = sum_free V b . v + sum_prescribed (-V L) . v, with f = L(u).
+  double externalPower(double t, const double* f, const double* v) const;
+  double kineticEnergy(const double* v) const;
+  double bodyForce(double t, std::size_t dof) const {
+    return bodyProfile_.empty() ? 0.0 : amplitude_(t) * bodyProfile_[dof];
+  }
+  double bodyAmplitude(double t) const { return bodyProfile_.empty() ? 0.0 : amplitude_(t); }
+  const std::vector<double>& bodyProfile() const { return bodyProfile_; }
+
+ private:
+  ForceModel& model_;
+  double density_;
+  std::vector<char> prescribed_;
+  std::vector<double> velocity_;
+  std::vector<double> bodyProfile_;
+  std::function<double(double)> amplitude_;
+  std::vector<double> u0_, v0_;
+};
+
+}  // namespace peristep

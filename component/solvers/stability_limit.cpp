@@ -1,0 +1,70 @@
+#include "solvers/stability_limit.hpp"
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/errors.hpp"
+
+namespace peristep {
+namespace {
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  return s;
+}
+
+}  // namespace
+
+StabilityEstimate estimateStabilityLimit(DynamicProblem& problem, int maxIterations) {
+  const std::size_t n = problem.dofs();
+  const std::vector<char>& fixed = problem.prescribed();
+  std::vector<double> zero(n, 0.0), v(n), w(n), prev(n, 0.0);
+  std::mt19937_64 rng(12345);
+  std::normal_distribution<double> normal;
+  for (std::size_t i = 0; i < n; ++i) v[i] = fixed[i] ? 0.0 : normal(rng);
+  double norm = std::sqrt(dot(v, v));
+  require(norm > 0, "stability limit: every dof is prescribed, nothing moves");
+  for (double& x : v) x /= norm;
+
+  // Lanczos on the symmetric operator -A (uniform point volumes make dL/du symmetric).
+  std::vector<double> alpha, beta;
+  double betaPrev = 0;
+  for (int m = 0; m < maxIterations; ++m) {
+    problem.accelerationDerivative(zero.data(), v.data(), w.data());
+    for (std::size_t i = 0; i < n; ++i) w[i] = -w[i];
+    const double a = dot(v, w);
+    for (std::size_t i = 0; i < n; ++i) w[i] -= a * v[i] + betaPrev * prev[i];
+    const double b = std::sqrt(dot(w, w));
+    alpha.push_back(a);
+    beta.push_back(b);
+    if (!(b > 1e-12 * std::abs(a))) break;  // invariant subspace: the Ritz values are exact
+    prev.swap(v);
+    for (std::size_t i = 0; i < n; ++i) v[i] = w[i] / b;
+    betaPrev = b;
+  }
+  const auto k = static_cast<Eigen::Index>(alpha.size());
+  Eigen::VectorXd diag(k), sub(std::max<Eigen::Index>(k - 1, 0));
+  for (Eigen::Index i = 0; i < k; ++i) diag[i] = alpha[static_cast<std::size_t>(i)];
+  for (Eigen::Index i = 0; i + 1 < k; ++i) sub[i] = beta[static_cast<std::size_t>(i)];
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;
+  eig.computeFromTridiagonal(diag, sub, Eigen::ComputeEigenvectors);
+  if (eig.info() != Eigen::Success) throw SolverFailure("stability limit: Lanczos tridiagonal eigensolve failed");
+  const double theta = eig.eigenvalues()[k - 1];
+  // |lambda - theta| <= beta_k |s_k| for the Ritz pair (theta, s): add it to err on the safe side.
+  const double residual = beta.back() * std::abs(eig.eigenvectors()(k - 1, k - 1));
+  const double lambda = theta + residual;
+  if (!(lambda > 0) || !std::isfinite(lambda))
+    throw SolverFailure("stability limit: the rest-state stiffness has no positive eigenvalue (lambda = " +
+                        std::to_string(lambda) + ")");
+  StabilityEstimate s;
+  s.omegaMax = std::sqrt(lambda);
+  s.criticalStep = 2.0 / s.omegaMax;
+  s.iterations = static_cast<int>(k);
+  return s;
+}
+
+}  // namespace peristep

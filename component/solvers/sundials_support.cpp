@@ -1,0 +1,35 @@
+#include "solvers/sundials_support.hpp"
+
+#include <cmath>
+
+namespace peristep::sundials {
+
+void initialState(DynamicProblem& problem, double* y) {
+  const std::size_t n = problem.dofs();
+  for (std::size_t d = 0; d < n; ++d) {
+    y[d] = problem.initialDisplacement()[d];
+    y[n + d] = problem.initialVelocity()[d];
+  }
+  y[2 * n] = 0.0;
+}
+
+void absoluteTolerances(std::size_t n, double atol, double* tol) {
+  for (std::size_t d = 0; d < 2 * n; ++d) tol[d] = atol;
+  tol[2 * n] = 1e300;  // the work W only records; it must not drive the step size
+}
+
+bool evaluateRhs(DynamicProblem& problem, double t, const double* y, double* ydot, double* f) {
+  const std::size_t n = problem.dofs();
+  const double* u = y;
+  const double* v = y + n;
+  problem.acceleration(t, u, f, ydot + n);
+  bool finite = true;
+  for (std::size_t d = 0; d < n; ++d) {
+    ydot[d] = v[d];  // prescribed dofs keep v = their constant velocity since their a = 0
+    finite = finite && std::isfinite(ydot[n + d]);
+  }
+  ydot[2 * n] = problem.externalPower(t, f, v);
+  return finite && std::isfinite(ydot[2 * n]);
+}
+
+}  // namespace peristep::sundials

@@ -1,0 +1,56 @@
+#pragma once
+// One small interface over the time integrators of the semi-discrete system, chosen by name:
+//   "central_difference"  explicit central difference 001:(35)-(36), fixed step, stability-checked
+//   "arkode_erk"          SUNDIALS ARKODE ERKStep, explicit adaptive Runge-Kutta
+//   "cvode_bdf"           SUNDIALS CVODE BDF (order <= 2 by default), Newton + matrix-free SPGMR with a
+//                         preconditioner built from the rest-state tangent: for stiff problems
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "solvers/dynamic_problem.hpp"
+
+namespace peristep {
+
+struct IntegratorOptions {
+  double timeStep = 0;                 // central difference: the step [s]
+  bool allowSubsteps = false;          // central difference: split a step above the stability limit
+  double relativeTolerance = 1e-6;     // SUNDIALS: local error control
+  double absoluteTolerance = 1e-12;    // SUNDIALS: [m] and [m/s] alike
+  long maxSteps = 100000000;           // SUNDIALS: per advanceTo call
+  int maxOrder = 2;                    // cvode_bdf: BDF order cap (orders > 2 are not A-stable, and the
+                                       // undamped modes of elastodynamics sit on the imaginary axis)
+  int krylovDimension = 20;            // cvode_bdf: SPGMR restart length
+};
+
+struct IntegratorStats {
+  long steps = 0;
+  long rhsEvaluations = 0;             // force evaluations L(u)
+  long jacobianProducts = 0;           // directional derivatives of L (about one force evaluation each)
+  long linearIterations = 0, nonlinearIterations = 0, preconditionerSetups = 0, errorTestFailures = 0;
+  double seconds = 0;                  // wall time spent in advanceTo
+  long forceEquivalents() const { return rhsEvaluations + jacobianProducts; }
+};
+
+class TimeIntegrator {
+ public:
+  virtual ~TimeIntegrator() = default;
+  virtual std::string_view name() const = 0;
+  // Integrate up to time t (>= time()); throws SolverFailure on a failed step and InvalidInput on
+  // a request the method refuses (a step above the stability limit).
+  virtual void advanceTo(double t) = 0;
+  virtual double time() const = 0;
+  virtual const double* displacement() const = 0;  // 2 N values at time()
+  virtual const double* velocity() const = 0;
+  // Work done on the body since t = 0 by the body force and by the reactions of the prescribed dofs.
+  virtual double externalWork() const = 0;
+  virtual IntegratorStats stats() const = 0;
+};
+
+std::vector<std::string> timeIntegratorNames();
+// Throws InvalidInput for an unknown name (the message lists the known ones) or invalid options.
+std::unique_ptr<TimeIntegrator> makeTimeIntegrator(std::string_view name, DynamicProblem& problem,
+                                                   const IntegratorOptions& options);
+
+}  // namespace peristep

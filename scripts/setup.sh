@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs PeriStep's Debian 12 packages (when missing) and builds it in ./build (Release).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(cmake g++ make pkg-config libeigen3-dev libsundials-dev libhdf5-dev zlib1g-dev libxml2-dev catch2
+          libopenblas-dev libsuitesparse-dev libzip-dev libtomlplusplus-dev libcli11-dev libpng-dev
+          python3 python3-numpy gnuplot-nox)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "setup: installing ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$(nproc)"
