@@ -1,0 +1,108 @@
+#include "fracture/bond_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "models/lps_material.hpp"
+
+namespace peristep {
+
+BondState makeBondState(const PointCloud& c, const Neighbours& nb, const std::vector<double>& lambda,
+                        const std::vector<double>& mu, const std::vector<double>& G) {
+  BondState s;
+  s.intact.assign(nb.bonds(), 1);
+  s.reverse.resize(nb.bonds());
+  s.criticalStretch.assign(nb.bonds(), std::numeric_limits<double>::infinity());
+  const double beta = 3.0 * c.delta / (4.0 * std::numbers::pi);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t ps = 0; ps < static_cast<std::ptrdiff_t>(c.size()); ++ps) {
+    const auto p = static_cast<std::size_t>(ps);
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
+      const std::uint32_t q = nb.index[k];
+      const auto first = nb.index.begin() + static_cast<std::ptrdiff_t>(nb.begin(q));
+      const auto last = nb.index.begin() + static_cast<std::ptrdiff_t>(nb.end(q));
+      s.reverse[k] = static_cast<std::size_t>(std::lower_bound(first, last, static_cast<std::uint32_t>(p)) -
+                                              nb.index.begin());
+      if (c.isVoid(p) || c.isVoid(q)) {
+        s.intact[k] = 0;
+      } else if (c.inDomain(p) || c.inDomain(q)) {
+        const double lam = harmonicMean(lambda[p], lambda[q]), m = harmonicMean(mu[p], mu[q]);
+        const double g = 0.5 * (G[p] + G[q]);
+        s.criticalStretch[k] = std::sqrt(g / (4.0 * (lam - m) * beta + 8.0 * m * beta));
+      }
+    }
+  }
+  return s;
+}
+
+namespace {
+
+// Orientation of point (x, y) against the directed line a -> b: +1 left or on it, -1 right.
+int side(const Segment& l, double x, double y) {
+  const double cross = (l.x1 - l.x0) * (y - l.y0) - (l.y1 - l.y0) * (x - l.x0);
+  return cross >= 0 ? 1 : -1;
+}
+
+bool crosses(const Segment& crack, double ax, double ay, double bx, double by) {
+  const Segment bond{ax, ay, bx, by};
+  return side(crack, ax, ay) != side(crack, bx, by) && side(bond, crack.x0, crack.y0) != side(bond, crack.x1, crack.y1);
+}
+
+}  // namespace
+
+std::size_t breakCrossing(BondState& s, const PointCloud& c, const Neighbours& nb, const Segment& crack) {
+  std::size_t broken = 0;
+  for (std::size_t p = 0; p < c.size(); ++p)
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
+      const std::uint32_t q = nb.index[k];
+      if (q < p || !s.intact[k]) continue;
+      if (crosses(crack, c.x[p], c.y[p], c.x[q], c.y[q])) {
+        s.intact[k] = s.intact[s.reverse[k]] = 0;
+        ++broken;
+      }
+    }
+  return broken;
+}
+
+std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, const Neighbours& nb,
+                                            const std::vector<double>& u) {
+  std::vector<std::size_t> fresh;
+  for (std::size_t p = 0; p < c.size(); ++p)
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
+      const std::uint32_t q = nb.index[k];
+      if (q < p || !s.intact[k] || !std::isfinite(s.criticalStretch[k])) continue;
+      const double zx = c.x[q] - c.x[p], zy = c.y[q] - c.y[p];
+      const double r = std::hypot(zx, zy);
+      const double stretch = (std::hypot(zx + u[2 * q] - u[2 * p], zy + u[2 * q + 1] - u[2 * p + 1]) - r) / r;
+      if (stretch > s.criticalStretch[k]) fresh.push_back(k);
+    }
+  for (std::size_t k : fresh) s.intact[k] = s.intact[s.reverse[k]] = 0;  // 000:(2.24): never heal
+  return fresh;
+}
+
+std::vector<double> damageField(const BondState& s, const PointCloud& c, const Neighbours& nb) {
+  std::vector<double> phi(c.domain.size(), 0.0);
+  for (std::size_t i = 0; i < c.domain.size(); ++i) {
+    const std::size_t p = c.domain[i];
+    std::size_t all = 0, broken = 0;
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
+      if (c.isVoid(nb.index[k])) continue;
+      ++all;
+      broken += s.intact[k] ? 0 : 1;
+    }
+    phi[i] = all ? static_cast<double>(broken) / static_cast<double>(all) : 1.0;
+  }
+  return phi;
+}
+
+std::size_t brokenPairs(const BondState& s, const PointCloud& c, const Neighbours& nb) {
+  std::size_t n = 0;
+  for (std::size_t p = 0; p < c.size(); ++p)
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k)
+      if (nb.index[k] > p && !s.intact[k] && !c.isVoid(p) && !c.isVoid(nb.index[k])) ++n;
+  return n;
+}
+
+}  // namespace peristep

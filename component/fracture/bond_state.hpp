@@ -1,0 +1,48 @@
+#pragma once
+// Bond state of brittle LPS fracture: gamma of 000:(2.24)/(3.17), critical stretch 000:(2.25),
+// pre-cracks, damage 000:(3.23). Only scenes that can break allocate it.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/neighbours.hpp"
+#include "geometry/point_cloud.hpp"
+
+namespace peristep {
+
+struct Segment {
+  double x0, y0, x1, y1;
+};
+
+struct BondState {
+  std::vector<std::uint8_t> intact;     // gamma per CSR entry; bond i->j and j->i always agree
+  std::vector<std::size_t> reverse;     // CSR position of the reverse bond
+  std::vector<double> criticalStretch;  // s0 per CSR entry; infinite where the bond cannot break
+
+  std::size_t bonds() const { return intact.size(); }
+};
+
+// Bonds to Void points start broken and stay so; bonds with no end in the domain never break (the
+// Dirichlet collar moves as prescribed). s0 = sqrt(G_ij / (4(lambda_ij-mu_ij) beta' + 8 mu_ij beta)),
+// beta = beta' = 3 delta/(4 pi), with harmonic-mean moduli and arithmetic-mean G (000:(2.25)-(2.26)).
+BondState makeBondState(const PointCloud& cloud, const Neighbours& nb, const std::vector<double>& lambda,
+                        const std::vector<double>& mu, const std::vector<double>& fractureEnergy);
+
+// Breaks every bond whose segment crosses the pre-crack; returns the number of pairs broken. A point on
+// the crack line counts as lying on its positive side (left of the direction x0 -> x1).
+std::size_t breakCrossing(BondState& s, const PointCloud& cloud, const Neighbours& nb, const Segment& crack);
+
+// Breaks every intact, breakable bond whose stretch
+// s = (|x_j - x_i + u_j - u_i| - |x_j - x_i|)/|x_j - x_i| exceeds s0 and returns the CSR positions of the
+// newly broken pairs (one entry per pair, from the lower point index). u holds (u_x, u_y) of every point.
+std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& cloud, const Neighbours& nb,
+                                            const std::vector<double>& u);
+
+// 000:(3.23) over the material bonds (bonds to Void are not counted): the broken fraction of a point's
+// bonds, on the domain points in image order.
+std::vector<double> damageField(const BondState& s, const PointCloud& cloud, const Neighbours& nb);
+
+// Number of broken pairs between material points (pre-crack included).
+std::size_t brokenPairs(const BondState& s, const PointCloud& cloud, const Neighbours& nb);
+
+}  // namespace peristep

@@ -1,0 +1,60 @@
+#pragma once
+// The pre-cracked glass-ceramic specimen of 000 Sec. 5: an 800 x 400 um plate with a 100 um pre-crack from
+// the left edge at mid-height, opened by displacing the top and bottom collars; left and right edges free.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fracture/toughness.hpp"
+#include "solvers/quasi_static_fracture.hpp"
+
+namespace peristep {
+
+struct GlassCeramicSpec {
+  GridSpec grid{401, 201, 800e-6, 400e-6, 3.0};  // h = 2 um, delta = 3h: 413 x 213 = 87969 points
+  double crystalFraction = 0.2;
+  std::uint64_t seed = 1;
+  double preCrackLength = 100e-6;
+  PhaseConstants phases{80e9, 133e9, 6.59, 86.35, 0.25};  // 000 Table 1
+  std::string linearSolver = "umfpack";
+};
+
+class GlassCeramicSpecimen {
+ public:
+  explicit GlassCeramicSpecimen(const GlassCeramicSpec& spec);
+
+  // Opening U_D: the top collar moves by (0, +U_D), the bottom collar by (0, -U_D) (x held).
+  LoadStepReport advance(double openingDisplacement);
+
+  const QuasiStaticFracture& solver() const { return *fracture_; }
+  double measuredCrystalFraction() const { return fraction_; }
+  // Fields on the domain points, image order.
+  std::vector<double> ux() const;
+  std::vector<double> uy() const;
+  std::vector<double> damage() const;
+  std::vector<double> youngsModulus() const;
+  // y-force of the top collar on the specimen per unit thickness [N/m].
+  double reactionForce() const;
+  CrackShares crackShares() const;
+  // Projected crack length W along x, from the pre-crack tip to the farthest newly broken bond.
+  double projectedCrackLength() const;
+  double energyReleaseRate() const;  // 000:(5.2)
+  double toughnessKIC() const;       // 000:(5.3)
+  bool crackReachedRightEdge() const;
+
+  std::vector<std::uint8_t> saveState() const { return fracture_->saveState(); }
+  void restoreState(std::span<const std::uint8_t> b) { fracture_->restoreState(b); }
+
+ private:
+  std::vector<double> domainValues(const std::vector<double>& perPoint) const;
+
+  GlassCeramicSpec spec_;
+  std::shared_ptr<const LpsDiscretization> disc_;
+  std::vector<std::uint8_t> crystal_, topCollar_;
+  std::vector<double> E_;
+  double fraction_ = 0, tipX_ = 0;
+  std::unique_ptr<QuasiStaticFracture> fracture_;
+};
+
+}  // namespace peristep
