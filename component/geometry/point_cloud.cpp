@@ -18,6 +18,7 @@ void validate(const GridSpec& s) {
                                               " but Ly/(ny-1) = " + std::to_string(hy));
   require(std::isfinite(s.deltaOverH) && s.deltaOverH >= 1.0,
           "horizon smaller than the grid spacing: deltaOverH must be >= 1 (got " + std::to_string(s.deltaOverH) + ")");
+  require(s.deltaOverH <= 20.0, "deltaOverH must be <= 20 (got " + std::to_string(s.deltaOverH) + ")");
   require(std::isfinite(s.jitter) && s.jitter >= 0.0 && s.jitter < 0.5,
           "jitter must lie in [0, 0.5) grid spacings (got " + std::to_string(s.jitter) + ")");
   const double points = static_cast<double>(s.nx) * static_cast<double>(s.ny);

@@ -91,18 +91,56 @@ std::vector<double> GlassCeramicSpecimen::youngsModulus() const { return domainV
 
 double GlassCeramicSpecimen::reactionForce() const { return fracture_->collarForce(topCollar_)[1]; }
 
+namespace {
+
+std::size_t ownerOf(const Neighbours& nb, std::size_t k) {
+  return static_cast<std::size_t>(std::upper_bound(nb.offset.begin(), nb.offset.end(), k) - nb.offset.begin() - 1);
+}
+
+}  // namespace
+
+std::vector<std::size_t> GlassCeramicSpecimen::mainCrackBonds() const {
+  const PointCloud& c = disc_->cloud;
+  const Neighbours& nb = disc_->neighbours;
+  const std::vector<std::size_t>& broken = fracture_->brokenByLoading();
+  std::vector<double> mx(broken.size()), my(broken.size());
+  for (std::size_t i = 0; i < broken.size(); ++i) {
+    const std::size_t p = ownerOf(nb, broken[i]), q = nb.index[broken[i]];
+    mx[i] = 0.5 * (c.x[p] + c.x[q]);
+    my[i] = 0.5 * (c.y[p] + c.y[q]);
+  }
+  // Breadth-first search over midpoints; the lists are a few thousand bonds, so pairs are tested directly.
+  const double link2 = 2.25 * c.h * c.h;
+  std::vector<char> reached(broken.size(), 0);
+  std::vector<std::size_t> queue;
+  for (std::size_t i = 0; i < broken.size(); ++i)
+    if (std::hypot(mx[i] - tipX_, my[i]) <= c.delta) {
+      reached[i] = 1;
+      queue.push_back(i);
+    }
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::size_t i = queue[head];
+    for (std::size_t j = 0; j < broken.size(); ++j)
+      if (!reached[j] && (mx[j] - mx[i]) * (mx[j] - mx[i]) + (my[j] - my[i]) * (my[j] - my[i]) <= link2) {
+        reached[j] = 1;
+        queue.push_back(j);
+      }
+  }
+  std::vector<std::size_t> main;
+  for (std::size_t i = 0; i < broken.size(); ++i)
+    if (reached[i]) main.push_back(broken[i]);
+  return main;
+}
+
 CrackShares GlassCeramicSpecimen::crackShares() const {
-  return peristep::crackShares(disc_->cloud, disc_->neighbours, fracture_->brokenByLoading(), crystal_);
+  return peristep::crackShares(disc_->cloud, disc_->neighbours, mainCrackBonds(), crystal_);
 }
 
 double GlassCeramicSpecimen::projectedCrackLength() const {
   const PointCloud& c = disc_->cloud;
   const Neighbours& nb = disc_->neighbours;
   double far = tipX_;
-  for (std::size_t k : fracture_->brokenByLoading()) {
-    const auto p = static_cast<std::size_t>(std::upper_bound(nb.offset.begin(), nb.offset.end(), k) - nb.offset.begin() - 1);
-    far = std::max(far, 0.5 * (c.x[p] + c.x[nb.index[k]]));
-  }
+  for (std::size_t k : mainCrackBonds()) far = std::max(far, 0.5 * (c.x[ownerOf(nb, k)] + c.x[nb.index[k]]));
   return std::min(far, 0.5 * spec_.grid.Lx) - tipX_;
 }
 

@@ -36,8 +36,12 @@ class GlassCeramicSpecimen {
   std::vector<double> youngsModulus() const;
   // y-force of the top collar on the specimen per unit thickness [N/m].
   double reactionForce() const;
+  // Bonds broken by loading that belong to the crack grown from the pre-crack tip: chains of broken bonds
+  // whose midpoints lie within 1.5 h of each other, started at the tip. Damage elsewhere (e.g. at the
+  // corners where the clamped edges meet the free ones) does not count towards the crack.
+  std::vector<std::size_t> mainCrackBonds() const;
   CrackShares crackShares() const;
-  // Projected crack length W along x, from the pre-crack tip to the farthest newly broken bond.
+  // Projected crack length W along x, from the pre-crack tip to the farthest bond of the main crack.
   double projectedCrackLength() const;
   double energyReleaseRate() const;  // 000:(5.2)
   double toughnessKIC() const;       // 000:(5.3)

@@ -20,6 +20,8 @@ class InterfaceCrackScene {
   // sqrt(sum |u_i - s u0(x_i)|^2 h^2) over the domain points.
   double errorL2() const;
   const QuasiStaticFracture& solver() const { return *fracture_; }
+  std::vector<std::uint8_t> saveState() const { return fracture_->saveState(); }
+  void restoreState(std::span<const std::uint8_t> b) { fracture_->restoreState(b); }
   // Exact field at a point; points on the crack line belong to the upper face (as the bond cutting does).
   Vec2 exact(double x, double y) const;
 

@@ -20,9 +20,10 @@ class ArkodeExplicit final : public TimeIntegrator {
         y_(static_cast<sunindextype>(2 * n_ + 1), ctx_),
         atol_(static_cast<sunindextype>(2 * n_ + 1), ctx_),
         f_(n_) {
-    require(o.relativeTolerance > 0 && o.absoluteTolerance > 0, "arkode_erk: tolerances must be positive");
+    require(o.relativeTolerance > 0 && o.absoluteTolerance > 0 && o.velocityTolerance > 0,
+            "arkode_erk: tolerances must be positive");
     sundials::initialState(problem_, y_.data());
-    sundials::absoluteTolerances(n_, o.absoluteTolerance, atol_.data());
+    sundials::absoluteTolerances(n_, o.absoluteTolerance, o.velocityTolerance, atol_.data());
     mem_.reset(ERKStepCreate(&ArkodeExplicit::rhs, 0.0, y_, ctx_));
     if (!mem_) throw SolverFailure("arkode_erk: ERKStepCreate failed");
     check(ERKStepSetUserData(mem_.get(), this), "ERKStepSetUserData");

@@ -32,39 +32,47 @@ CentralDifference::CentralDifference(DynamicProblem& problem, const IntegratorOp
   a_.assign(n, 0.0);
   f_.assign(n, 0.0);
   fNext_.assign(n, 0.0);
-  uOld_.assign(n, 0.0);
+  volume_.resize(n);
+  for (std::size_t d = 0; d < n; ++d) volume_[d] = problem_.model().pointVolume(d / 2);
   problem_.applyPrescribed(0.0, u_.data(), v_.data());
   problem_.acceleration(0.0, u_.data(), f_.data(), a_.data());
   ++stats_.rhsEvaluations;
 }
 
 void CentralDifference::step(double dt) {
-  const std::size_t n = problem_.dofs();
-  const std::vector<char>& fixed = problem_.prescribed();
+  const auto n = static_cast<std::ptrdiff_t>(problem_.dofs());
+  const char* fixed = problem_.prescribed().data();
   const double tNew = t_ + dt;
-  uOld_ = u_;
-  for (std::size_t d = 0; d < n; ++d)
+  // External work by the trapezoid rule on each displacement increment, consistent with the scheme:
+  // the body force on free dofs (increment dt v^{k+1/2}), the reactions -V L on prescribed ones
+  // (increment dt times their velocity).
+  const double bMid = 0.5 * (problem_.bodyAmplitude(t_) + problem_.bodyAmplitude(tNew));
+  const double* profile = problem_.bodyProfile().empty() ? nullptr : problem_.bodyProfile().data();
+  const double* vel = problem_.prescribedVelocity().data();
+  double* u = u_.data();
+  double* v = v_.data();
+  double* a = a_.data();
+  const double* V = volume_.data();
+  double work = 0;
+#pragma omp parallel for schedule(static) reduction(+ : work) if (problem_.threaded())
+  for (std::ptrdiff_t d = 0; d < n; ++d)
     if (!fixed[d]) {
-      v_[d] += 0.5 * dt * a_[d];
-      u_[d] += dt * v_[d];
+      v[d] += 0.5 * dt * a[d];
+      u[d] += dt * v[d];
+      if (profile) work += V[d] * bMid * profile[d] * dt * v[d];
     }
-  problem_.applyPrescribed(tNew, u_.data(), v_.data());
-  problem_.acceleration(tNew, u_.data(), fNext_.data(), a_.data());
-  for (std::size_t d = 0; d < n; ++d)
-    if (!fixed[d]) v_[d] += 0.5 * dt * a_[d];
-
-  // External work by the trapezoid rule on the displacement increment (consistent with the scheme):
-  // body force on free dofs, reactions -V L on prescribed ones.
-  const double bOld = problem_.bodyAmplitude(t_), bNew = problem_.bodyAmplitude(tNew);
-  const std::vector<double>& profile = problem_.bodyProfile();
-  const ForceModel& model = problem_.model();
-  for (std::size_t d = 0; d < n; ++d) {
-    const double du = u_[d] - uOld_[d];
-    if (fixed[d])
-      work_ -= model.pointVolume(d / 2) * 0.5 * (f_[d] + fNext_[d]) * du;
-    else if (!profile.empty())
-      work_ += model.pointVolume(d / 2) * 0.5 * (bOld + bNew) * profile[d] * du;
+  problem_.applyPrescribed(tNew, u, v);
+  problem_.acceleration(tNew, u, fNext_.data(), a);
+  const double* f0 = f_.data();
+  const double* f1 = fNext_.data();
+#pragma omp parallel for schedule(static) reduction(+ : work) if (problem_.threaded())
+  for (std::ptrdiff_t d = 0; d < n; ++d) {
+    if (!fixed[d])
+      v[d] += 0.5 * dt * a[d];
+    else
+      work -= V[d] * 0.5 * (f0[d] + f1[d]) * vel[d] * dt;
   }
+  work_ += work;
   f_.swap(fNext_);
   t_ = tNew;
   ++stats_.steps;

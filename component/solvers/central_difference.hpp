@@ -33,7 +33,7 @@ class CentralDifference final : public TimeIntegrator {
   DynamicProblem& problem_;
   StabilityEstimate stability_;
   double dt_ = 0, t_ = 0, work_ = 0;
-  std::vector<double> u_, v_, a_, f_, fNext_, uOld_;
+  std::vector<double> u_, v_, a_, f_, fNext_, volume_;  // volume_: per dof
   IntegratorStats stats_;
 };
 

@@ -24,11 +24,12 @@ class CvodeImplicit final : public TimeIntegrator {
         atol_(static_cast<sunindextype>(2 * n_ + 1), ctx_),
         f_(n_),
         precond_(problem) {
-    require(o.relativeTolerance > 0 && o.absoluteTolerance > 0, "cvode_bdf: tolerances must be positive");
+    require(o.relativeTolerance > 0 && o.absoluteTolerance > 0 && o.velocityTolerance > 0,
+            "cvode_bdf: tolerances must be positive");
     require(o.maxOrder >= 1 && o.maxOrder <= 5, "cvode_bdf: maxOrder must lie in 1..5");
     require(o.krylovDimension >= 1, "cvode_bdf: krylovDimension must be positive");
     sundials::initialState(problem_, y_.data());
-    sundials::absoluteTolerances(n_, o.absoluteTolerance, atol_.data());
+    sundials::absoluteTolerances(n_, o.absoluteTolerance, o.velocityTolerance, atol_.data());
     mem_.reset(CVodeCreate(CV_BDF, ctx_));
     if (!mem_) throw SolverFailure("cvode_bdf: CVodeCreate failed");
     void* m = mem_.get();

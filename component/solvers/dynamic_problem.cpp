@@ -20,6 +20,7 @@ void DynamicProblem::prescribeVelocity(const std::vector<std::uint32_t>& dofs, d
   require(std::isfinite(velocity), "dynamic problem: prescribed velocity must be finite");
   for (const std::uint32_t d : dofs) {
     require(d < this->dofs(), "dynamic problem: prescribed dof " + std::to_string(d) + " out of range");
+    if (!prescribed_[d]) prescribedList_.push_back(d);
     prescribed_[d] = 1;
     velocity_[d] = velocity;
     v0_[d] = velocity;
@@ -46,10 +47,10 @@ void DynamicProblem::setInitialState(std::vector<double> u0, std::vector<double>
 void DynamicProblem::acceleration(double t, const double* u, double* f, double* a) {
   model_.force(u, f);
   const double amp = bodyAmplitude(t), inv = 1.0 / density_;
-  const std::size_t n = dofs();
+  const auto n = static_cast<std::ptrdiff_t>(dofs());
   const double* b = bodyProfile_.empty() ? nullptr : bodyProfile_.data();
-  for (std::size_t d = 0; d < n; ++d)
-    a[d] = prescribed_[d] ? 0.0 : inv * (f[d] + (b ? amp * b[d] : 0.0));
+#pragma omp parallel for schedule(static) if (threaded())
+  for (std::ptrdiff_t d = 0; d < n; ++d) a[d] = prescribed_[d] ? 0.0 : inv * (f[d] + (b ? amp * b[d] : 0.0));
 }
 
 void DynamicProblem::accelerationDerivative(const double* u, const double* du, double* da) {
@@ -59,11 +60,10 @@ void DynamicProblem::accelerationDerivative(const double* u, const double* du, d
 }
 
 void DynamicProblem::applyPrescribed(double t, double* u, double* v) const {
-  for (std::size_t d = 0; d < dofs(); ++d)
-    if (prescribed_[d]) {
-      u[d] = u0_[d] + velocity_[d] * t;
-      v[d] = velocity_[d];
-    }
+  for (const std::uint32_t d : prescribedList_) {
+    u[d] = u0_[d] + velocity_[d] * t;
+    v[d] = velocity_[d];
+  }
 }
 
 double DynamicProblem::externalPower(double t, const double* f, const double* v) const {

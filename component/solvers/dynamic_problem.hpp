@@ -22,9 +22,12 @@ class DynamicProblem {
   void setInitialState(std::vector<double> u0, std::vector<double> v0);
 
   ForceModel& model() { return model_; }
+  // Loops over dofs use threads only above this size (below, a parallel region costs more than it saves).
+  bool threaded() const { return dofs() >= 40000; }
   std::size_t dofs() const { return 2 * model_.points(); }
   double density() const { return density_; }
   const std::vector<char>& prescribed() const { return prescribed_; }   // 1 on prescribed dofs
+  const std::vector<std::uint32_t>& prescribedDofs() const { return prescribedList_; }
   const std::vector<double>& prescribedVelocity() const { return velocity_; }
   const std::vector<double>& initialDisplacement() const { return u0_; }
   const std::vector<double>& initialVelocity() const { return v0_; }
@@ -39,9 +42,6 @@ class DynamicProblem {
   // P = sum_free V b . v + sum_prescribed (-V L) . v, with f = L(u).
   double externalPower(double t, const double* f, const double* v) const;
   double kineticEnergy(const double* v) const;
-  double bodyForce(double t, std::size_t dof) const {
-    return bodyProfile_.empty() ? 0.0 : amplitude_(t) * bodyProfile_[dof];
-  }
   double bodyAmplitude(double t) const { return bodyProfile_.empty() ? 0.0 : amplitude_(t); }
   const std::vector<double>& bodyProfile() const { return bodyProfile_; }
 
@@ -49,6 +49,7 @@ class DynamicProblem {
   ForceModel& model_;
   double density_;
   std::vector<char> prescribed_;
+  std::vector<std::uint32_t> prescribedList_;
   std::vector<double> velocity_;
   std::vector<double> bodyProfile_;
   std::function<double(double)> amplitude_;

@@ -159,20 +159,20 @@ std::array<double, 2> QuasiStaticFracture::collarForce(const std::vector<std::ui
 std::vector<std::uint8_t> QuasiStaticFracture::saveState() const {
   ByteWriter w;
   w.put(load_);
-  w.put(u_);
-  w.put(x_);
-  w.put(bonds_.intact);
-  w.put(brokenByLoading_);
+  w.putArray(u_);
+  w.putArray(x_);
+  w.putArray(bonds_.intact);
+  w.putArray(brokenByLoading_);
   return w.take();
 }
 
 void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   ByteReader r(bytes);
   const double load = r.get<double>();
-  auto u = r.getVector<double>(u_.size());
-  auto x = r.getVector<double>(x_.size());
-  auto intact = r.getVector<std::uint8_t>(bonds_.intact.size());
-  auto broken = r.getIndexVector();
+  auto u = r.getArray<double>(u_.size());
+  auto x = r.getArray<double>(x_.size());
+  auto intact = r.getArray<std::uint8_t>(bonds_.intact.size());
+  auto broken = r.getArray<std::size_t>();
   r.expectEnd();
   load_ = load;
   u_ = std::move(u);

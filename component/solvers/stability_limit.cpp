@@ -1,5 +1,6 @@
 #include "solvers/stability_limit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -46,14 +47,20 @@ StabilityEstimate estimateStabilityLimit(DynamicProblem& problem, int maxIterati
     for (std::size_t i = 0; i < n; ++i) v[i] = w[i] / b;
     betaPrev = b;
   }
+  // Ritz values from the (scaled) tridiagonal matrix, dense: k <= maxIterations is small.
   const auto k = static_cast<Eigen::Index>(alpha.size());
-  Eigen::VectorXd diag(k), sub(std::max<Eigen::Index>(k - 1, 0));
-  for (Eigen::Index i = 0; i < k; ++i) diag[i] = alpha[static_cast<std::size_t>(i)];
-  for (Eigen::Index i = 0; i + 1 < k; ++i) sub[i] = beta[static_cast<std::size_t>(i)];
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;
-  eig.computeFromTridiagonal(diag, sub, Eigen::ComputeEigenvectors);
-  if (eig.info() != Eigen::Success) throw SolverFailure("stability limit: Lanczos tridiagonal eigensolve failed");
-  const double theta = eig.eigenvalues()[k - 1];
+  double scale = 0;
+  for (const double a : alpha) scale = std::max(scale, std::abs(a));
+  if (!(scale > 0) || !std::isfinite(scale))
+    throw SolverFailure("stability limit: the rest-state stiffness is zero or not finite");
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(k, k);
+  for (Eigen::Index i = 0; i < k; ++i) {
+    T(i, i) = alpha[static_cast<std::size_t>(i)] / scale;
+    if (i + 1 < k) T(i, i + 1) = T(i + 1, i) = beta[static_cast<std::size_t>(i)] / scale;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(T);
+  if (eig.info() != Eigen::Success) throw SolverFailure("stability limit: Lanczos Ritz values did not converge");
+  const double theta = scale * eig.eigenvalues()[k - 1];
   // |lambda - theta| <= beta_k |s_k| for the Ritz pair (theta, s): add it to err on the safe side.
   const double residual = beta.back() * std::abs(eig.eigenvectors()(k - 1, k - 1));
   const double lambda = theta + residual;

@@ -13,8 +13,11 @@ void initialState(DynamicProblem& problem, double* y) {
   y[2 * n] = 0.0;
 }
 
-void absoluteTolerances(std::size_t n, double atol, double* tol) {
-  for (std::size_t d = 0; d < 2 * n; ++d) tol[d] = atol;
+void absoluteTolerances(std::size_t n, double displacementTolerance, double velocityTolerance, double* tol) {
+  for (std::size_t d = 0; d < n; ++d) {
+    tol[d] = displacementTolerance;
+    tol[n + d] = velocityTolerance;
+  }
   tol[2 * n] = 1e300;  // the work W only records; it must not drive the step size
 }
 

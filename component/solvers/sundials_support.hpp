@@ -48,7 +48,7 @@ inline void keepMessage(int, const char* module, const char* function, char* msg
 
 // Fill y with the problem's initial state, and the absolute tolerances (W uncontrolled).
 void initialState(DynamicProblem& problem, double* y);
-void absoluteTolerances(std::size_t dofs, double atol, double* tol);
+void absoluteTolerances(std::size_t dofs, double displacementTolerance, double velocityTolerance, double* tol);
 // ydot = [v, a(t, u), P(t, u, v)]; f is scratch of 2N values. Returns false when the result is not finite.
 bool evaluateRhs(DynamicProblem& problem, double t, const double* y, double* ydot, double* f);
 

@@ -17,7 +17,8 @@ struct IntegratorOptions {
   double timeStep = 0;                 // central difference: the step [s]
   bool allowSubsteps = false;          // central difference: split a step above the stability limit
   double relativeTolerance = 1e-6;     // SUNDIALS: local error control
-  double absoluteTolerance = 1e-12;    // SUNDIALS: [m] and [m/s] alike
+  double absoluteTolerance = 1e-12;    // SUNDIALS: on displacements [m]
+  double velocityTolerance = 1e-6;     // SUNDIALS: absolute tolerance on velocities [m/s]
   long maxSteps = 100000000;           // SUNDIALS: per advanceTo call
   int maxOrder = 2;                    // cvode_bdf: BDF order cap (orders > 2 are not A-stable, and the
                                        // undamped modes of elastodynamics sit on the imaginary axis)

@@ -3,6 +3,7 @@
 #include <umfpack.h>
 
 #include <cmath>
+#include <mutex>
 #include <string>
 
 #include "core/errors.hpp"
@@ -25,6 +26,11 @@ class UmfpackSolver final : public LinearSolver {
 
   void analyze(const CsrMatrix& A) override {
     release();
+    // METIS keeps its random-number state per process: two instances ordering at the same time race
+    // and get different (equally valid) orderings, so concurrent instances would not repeat each other.
+    static std::mutex metisMutex;
+    std::unique_lock lock(metisMutex, std::defer_lock);
+    if (metis_) lock.lock();
     check(umfpack_dl_symbolic(A.rows, A.cols, A.rowStart.data(), A.col.data(), A.value.data(), &symbolic_,
                               control_, info_),
           "symbolic analysis");

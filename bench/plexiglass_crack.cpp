@@ -1,0 +1,136 @@
+// The Plexiglass crack of 001 Sec. 6.1 (scene set-up: component/scenes/plexiglass_crack.hpp).
+//
+// How to run:
+//   plexiglass_crack rates  <eps_mm> <T_us> [csv]           rate estimate 001:(106), h = eps/2, eps/4, eps/8
+//   plexiglass_crack energy <eps_mm> <eps/h> <T_us> [csv]   energy bookkeeping and Griffith check
+// What it shows: "rates" prints ||u1 - u2||, ||u2 - u3|| and the rate b every 2 us (001 Fig. 7);
+// "energy" prints kinetic, elastic and external work, their balance, the crack-zone energy P.E. and
+// G_c x crack length (001 Fig. 6), with wall time and peak memory, then the crack-zone energy per
+// unit length row by row along the crack at the end time.
+#include <cstdio>
+#include <cstddef>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/memory.hpp"
+#include "core/timer.hpp"
+#include "scenes/dynamic_run.hpp"
+#include "scenes/mesh_convergence.hpp"
+#include "scenes/plexiglass_crack.hpp"
+
+using namespace peristep;
+
+namespace {
+
+int rates(double eps, double T, const char* csvPath) {
+  const double ratios[3] = {2, 4, 8};
+  std::vector<std::vector<std::vector<double>>> snapshots(3);  // [mesh][report][dof]
+  std::vector<DynamicScene> scenes;
+  std::vector<double> seconds;
+  for (int m = 0; m < 3; ++m) {
+    PlexiglassCrackSpec spec;
+    spec.horizon = eps;
+    spec.meshRatio = ratios[m];
+    scenes.push_back(makePlexiglassCrack(spec));
+    DynamicRunOptions o;
+    o.endTime = T;
+    const Stopwatch clock;
+    const DynamicRunResult r = runDynamicScene(scenes.back(), o, [&](const TimeIntegrator& integrator, const EnergyRecord&) {
+      snapshots[static_cast<std::size_t>(m)].emplace_back(integrator.displacement(),
+                                                          integrator.displacement() + scenes.back().problem->dofs());
+    });
+    seconds.push_back(clock.seconds());
+    std::printf("h = eps/%g: %zu points, %zu bonds, %ld steps, %.1f s, final crack length %.4f m\n", ratios[m],
+                scenes.back().cloud.size(), scenes.back().model->bonds().bonds(), r.stats.steps, seconds.back(),
+                r.records.back().crackLength);
+    std::fflush(stdout);
+  }
+  std::FILE* csv = csvPath ? std::fopen(csvPath, "w") : nullptr;
+  if (csv) std::fprintf(csv, "t_us,d12,d23,rate\n");
+  std::printf("%8s %14s %14s %8s\n", "t [us]", "||u1-u2||", "||u2-u3||", "rate");
+  for (std::size_t k = 1; k < snapshots[0].size(); ++k) {
+    const double d12 = nestedL2Difference(scenes[0], snapshots[0][k].data(), scenes[1], snapshots[1][k].data());
+    const double d23 = nestedL2Difference(scenes[1], snapshots[1][k].data(), scenes[2], snapshots[2][k].data());
+    const double b = rateEstimate(d12, d23, 2.0);
+    const double t = 2.0 * static_cast<double>(k);
+    std::printf("%8.1f %14.6e %14.6e %8.3f\n", t, d12, d23, b);
+    if (csv) std::fprintf(csv, "%g,%.9e,%.9e,%.6f\n", t, d12, d23, b);
+  }
+  if (csv) std::fclose(csv);
+  std::printf("peak memory %.0f MB\n", static_cast<double>(peakMemoryBytes()) / 1e6);
+  return 0;
+}
+
+// Where the crack-zone energy sits at the end: P.E. of each lattice row (points with Z > 1) per unit
+// crack length. Rows well behind the tip hold G_c per unit length when the model reproduces Griffith;
+// the rows of the process zone at the tip (Z > 1 but bonds not yet fully softened) hold less.
+void crackProfile(DynamicScene& scene, const std::vector<double>& u) {
+  const std::size_t n = scene.cloud.size();
+  std::vector<double> Z(n), e(n), perRow(scene.ny, 0.0);
+  scene.model->damage(u.data(), Z.data());
+  scene.model->tensileEnergyDensity(u.data(), e.data());
+  for (std::size_t p = 0; p < n; ++p)
+    if (scene.material[p] && Z[p] > 1.0) perRow[p / scene.nx] += scene.model->pointVolume(p) * e[p];
+  const double Gc = scene.model->material().fractureEnergy();
+  std::printf("crack-zone energy per unit length, by row (G_c = %g J/m^2):\n%10s %12s %8s\n", Gc, "y [m]", "J/m^2", "/G_c");
+  for (std::size_t k = 0; k < scene.ny; ++k)
+    if (perRow[k] > 0)
+      std::printf("%10.5f %12.2f %8.3f\n", scene.y0 + static_cast<double>(k) * scene.h(), perRow[k] / scene.h(),
+                  perRow[k] / scene.h() / Gc);
+}
+
+int energy(double eps, double ratio, double T, const char* csvPath) {
+  PlexiglassCrackSpec spec;
+  spec.horizon = eps;
+  spec.meshRatio = ratio;
+  DynamicScene scene = makePlexiglassCrack(spec);
+  const double Gc = scene.model->material().fractureEnergy();
+  std::printf("eps = %g mm, h = %g mm: %zu points, %zu bonds\n", eps * 1e3, scene.h() * 1e3, scene.cloud.size(),
+              scene.model->bonds().bonds());
+  DynamicRunOptions o;
+  o.endTime = T;
+  o.reportInterval = 1e-6;
+  std::FILE* csv = csvPath ? std::fopen(csvPath, "w") : nullptr;
+  if (csv) std::fprintf(csv, "t_us,kinetic,elastic,work,balance,fracture_energy,crack_length,griffith,max_Z\n");
+  std::printf("%6s %11s %11s %11s %11s %11s %9s %11s %7s %7s\n", "t[us]", "kinetic", "elastic", "work", "balance",
+              "P.E.", "l [m]", "Gc l", "PE/GE", "max Z");
+  const Stopwatch clock;
+  EnergyRecord e0;
+  std::vector<double> u;
+  const DynamicRunResult r = runDynamicScene(scene, o, [&](const TimeIntegrator& integrator, const EnergyRecord& e) {
+    if (e.time == 0) e0 = e;
+    u.assign(integrator.displacement(), integrator.displacement() + scene.problem->dofs());
+    const double ge = Gc * e.crackLength;
+    std::printf("%6.1f %11.4e %11.4e %11.4e %11.3e %11.4e %9.5f %11.4e %7.3f %7.1f\n", e.time * 1e6, e.kinetic, e.elastic,
+                e.externalWork, e.balance(e0), e.fractureEnergy, e.crackLength, ge, ge > 0 ? e.fractureEnergy / ge : 0.0,
+                e.maxDamage);
+    std::fflush(stdout);
+    if (csv)
+      std::fprintf(csv, "%g,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.6f\n", e.time * 1e6, e.kinetic, e.elastic, e.externalWork,
+                   e.balance(e0), e.fractureEnergy, e.crackLength, ge, e.maxDamage);
+  });
+  if (csv) std::fclose(csv);
+  std::printf("wall time %.1f s for %ld steps (%.3e bond-updates/s), peak memory %.0f MB\n", clock.seconds(), r.stats.steps,
+              static_cast<double>(scene.model->bonds().bonds()) * static_cast<double>(r.stats.steps) / clock.seconds(),
+              static_cast<double>(peakMemoryBytes()) / 1e6);
+  crackProfile(scene, u);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  try {
+    if (mode == "rates" && argc >= 4) return rates(std::atof(argv[2]) * 1e-3, std::atof(argv[3]) * 1e-6, argc > 4 ? argv[4] : nullptr);
+    if (mode == "energy" && argc >= 5)
+      return energy(std::atof(argv[2]) * 1e-3, std::atof(argv[3]), std::atof(argv[4]) * 1e-6, argc > 5 ? argv[5] : nullptr);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  std::fprintf(stderr, "usage: %s rates <eps_mm> <T_us> [csv] | energy <eps_mm> <eps/h> <T_us> [csv]\n", argv[0]);
+  return 2;
+}

@@ -1,0 +1,65 @@
+#include "fmi/fmu_state.hpp"
+
+#include <cstring>
+#include <string>
+
+#include "peristep.h"
+
+namespace peristep::fmi {
+
+namespace {
+
+constexpr std::uint32_t kMagic = 0x53505350;  // "PSPS"
+constexpr std::uint32_t kFormat = 1;
+
+// The token identifies the variable table the state was written against.
+constexpr std::string_view kToken = PERISTEP_INSTANTIATION_TOKEN;
+
+bool knownState(std::uint32_t s) {
+  return s == Instantiated || s == ConfigurationMode || s == InitializationMode || s == StepMode || s == Terminated;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> serialize(const Snapshot& s) {
+  ByteWriter out;
+  out.put(kMagic);
+  out.put(kFormat);
+  out.putArray(std::span<const char>(kToken.data(), kToken.size()));
+  out.put<std::uint32_t>(s.state);
+  out.put(s.time);
+  out.put<std::uint8_t>(s.stopTimeDefined);
+  out.put(s.stopTime);
+  s.values.write(out);
+  out.put<std::uint8_t>(s.solutionValid);
+  out.put<std::uint8_t>(s.setSinceStep);
+  out.put<std::uint8_t>(s.hasModel);
+  out.putArray(std::span<const std::uint8_t>(s.model));
+  return out.take();
+}
+
+Snapshot deserialize(std::span<const std::uint8_t> bytes) {
+  ByteReader in(bytes);
+  if (in.get<std::uint32_t>() != kMagic) ByteReader::corrupt("it does not start like a PeriStep FMU state");
+  if (const auto f = in.get<std::uint32_t>(); f != kFormat)
+    ByteReader::corrupt("format " + std::to_string(f) + ", this build reads format " + std::to_string(kFormat));
+  const auto token = in.getArray<char>();
+  if (std::string_view(token.data(), token.size()) != kToken)
+    ByteReader::corrupt("it was written by another PeriStep build (instantiation token differs)");
+  Snapshot s;
+  const auto state = in.get<std::uint32_t>();
+  if (!knownState(state)) ByteReader::corrupt("unknown FMI state " + std::to_string(state));
+  s.state = static_cast<State>(state);
+  s.time = in.get<double>();
+  s.stopTimeDefined = in.get<std::uint8_t>() != 0;
+  s.stopTime = in.get<double>();
+  s.values = ParameterValues::read(in);
+  s.solutionValid = in.get<std::uint8_t>() != 0;
+  s.setSinceStep = in.get<std::uint8_t>() != 0;
+  s.hasModel = in.get<std::uint8_t>() != 0;
+  s.model = in.getArray<std::uint8_t>();
+  if (in.remaining() != 0) ByteReader::corrupt(std::to_string(in.remaining()) + " bytes follow the state");
+  return s;
+}
+
+}  // namespace peristep::fmi

@@ -1,0 +1,28 @@
+#pragma once
+// The log categories of <LogCategories> in modelDescription.xml, shared by the logger and the
+// model-description generator so that the two cannot disagree.
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+namespace peristep::fmi {
+
+enum class LogCategory : std::size_t { Events, StatusWarning, StatusError };
+
+struct LogCategoryInfo {
+  LogCategory id;
+  std::string_view name;
+  std::string_view description;
+  bool onWhenLoggingOn;  // enabled by loggingOn = true at instantiation (the "vendor defined set")
+};
+
+inline constexpr std::array<LogCategoryInfo, 3> kLogCategories{{
+    {LogCategory::Events, "logEvents",
+     "Mode changes, scene set-up and every communication step (debug detail)", false},
+    {LogCategory::StatusWarning, "logStatusWarning",
+     "Messages of calls returning fmi3Warning (PeriStep returns none in normal operation)", true},
+    {LogCategory::StatusError, "logStatusError",
+     "Why a call returned fmi3Error: illegal call sequence, bad argument, invalid value, solver failure", true},
+}};
+
+}  // namespace peristep::fmi

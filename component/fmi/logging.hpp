@@ -1,0 +1,39 @@
+#pragma once
+// The importer's logMessage callback behind the log categories of modelDescription.xml. loggingOn
+// at instantiation enables the status categories; fmi3SetDebugLogging switches any of them.
+#include <array>
+#include <span>
+#include <string_view>
+
+#include "fmi/log_categories.hpp"
+#include "fmi3FunctionTypes.h"
+
+namespace peristep::fmi {
+
+class Logger {
+ public:
+  Logger(fmi3LogMessageCallback callback, fmi3InstanceEnvironment environment, bool loggingOn);
+
+  // Category logStatusError, status fmi3Error. Never throws.
+  void error(std::string_view message) const noexcept;
+  // Category logEvents, status fmi3OK.
+  void event(std::string_view message) const noexcept;
+  bool eventsOn() const { return enabled(LogCategory::Events); }
+
+  // fmi3SetDebugLogging: no categories means all of them. Throws InvalidInput for an unknown name
+  // (and then changes nothing).
+  void setDebugLogging(bool on, std::span<const fmi3String> categories);
+  // Back to the categories chosen at instantiation (fmi3Reset).
+  void reset();
+
+ private:
+  bool enabled(LogCategory c) const { return enabled_[static_cast<std::size_t>(c)]; }
+  void log(LogCategory c, fmi3Status status, std::string_view message) const noexcept;
+
+  fmi3LogMessageCallback callback_;
+  fmi3InstanceEnvironment environment_;
+  bool loggingOn_;
+  std::array<bool, kLogCategories.size()> enabled_{};
+};
+
+}  // namespace peristep::fmi

@@ -1,0 +1,101 @@
+#include "fmi/model_binding.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "core/errors.hpp"
+#include "peristep.h"
+
+namespace peristep::fmi {
+
+namespace {
+
+using P = const ParameterValues&;
+using M = const SceneModel*;
+
+SceneId sceneId(std::int64_t value) {
+  switch (value) {
+    case PERISTEP_SCENE_SMOOTH: return SceneId::Smooth;
+    case PERISTEP_SCENE_COMPOSITE: return SceneId::Composite;
+    case PERISTEP_SCENE_INTERFACE_CRACK: return SceneId::InterfaceCrack;
+    case PERISTEP_SCENE_GLASS_CERAMIC: return SceneId::GlassCeramic;
+  }
+  throw InvalidInput("unknown scene " + std::to_string(value));
+}
+
+std::string solverName(std::int64_t value) {
+  switch (value) {
+    case PERISTEP_LINEAR_SOLVER_UMFPACK: return "umfpack";
+    case PERISTEP_LINEAR_SOLVER_UMFPACK_AMD: return "umfpack-amd";
+    case PERISTEP_LINEAR_SOLVER_SPARSE_LU: return "sparselu";
+    case PERISTEP_LINEAR_SOLVER_BICGSTAB_ILUT: return "bicgstab-ilut";
+  }
+  throw InvalidInput("unknown linear solver " + std::to_string(value));
+}
+
+// A field of the model copied into an importer's array; the sizes agree by construction.
+void copyField(const std::vector<double>& field, std::span<double> out) {
+  if (field.size() != out.size())
+    throw SolverFailure("internal error: field of " + std::to_string(field.size()) + " values for " +
+                        std::to_string(out.size()) + " elements");
+  std::copy(field.begin(), field.end(), out.begin());
+}
+
+// Scalar outputs that no scene computes yet.
+void zero(P, M, std::span<double> out) { std::fill(out.begin(), out.end(), 0.0); }
+
+const std::array<ComputedVariable, 15> kComputed{{
+    {PERISTEP_VR_XI_DISTRIBUTION, Needs::Parameters, nullptr,
+     [](P p, M, std::span<std::int32_t> out) {
+       const SceneId s = sceneId(p.scalar<std::int64_t>(PERISTEP_VR_SCENE));
+       for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<std::int32_t>(xiDistribution(s, k));
+     }},
+    {PERISTEP_VR_XI_SCALE, Needs::Parameters,
+     [](P p, M, std::span<double> out) {
+       const SceneId s = sceneId(p.scalar<std::int64_t>(PERISTEP_VR_SCENE));
+       for (std::size_t k = 0; k < out.size(); ++k) out[k] = xiScale(s, k);
+     }},
+    {PERISTEP_VR_X, Needs::Model, [](P, M m, std::span<double> out) { copyField(m->x(), out); }},
+    {PERISTEP_VR_Y, Needs::Model, [](P, M m, std::span<double> out) { copyField(m->y(), out); }},
+    {PERISTEP_VR_UX, Needs::Solution, [](P, M m, std::span<double> out) { copyField(m->ux(), out); }},
+    {PERISTEP_VR_UY, Needs::Solution, [](P, M m, std::span<double> out) { copyField(m->uy(), out); }},
+    {PERISTEP_VR_DAMAGE, Needs::Solution, [](P, M m, std::span<double> out) { copyField(m->damage(), out); }},
+    {PERISTEP_VR_YOUNGS_MODULUS, Needs::Model,
+     [](P, M m, std::span<double> out) { copyField(m->youngsModulus(), out); }},
+    {PERISTEP_VR_REACTION_FORCE, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->reactionForce(); }},
+    {PERISTEP_VR_CRACK_LENGTH, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->crackLength(); }},
+    {PERISTEP_VR_BROKEN_BONDS, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->brokenBonds(); }},
+    {PERISTEP_VR_STRAIN_ENERGY, Needs::Solution, zero},
+    {PERISTEP_VR_FRACTURE_ENERGY, Needs::Solution,
+     [](P, M m, std::span<double> out) { out[0] = m->fractureEnergy(); }},
+    {PERISTEP_VR_TOUGHNESS_KIC, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->toughnessKIC(); }},
+    {PERISTEP_VR_ERROR_L2, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->errorL2(); }},
+}};
+
+}  // namespace
+
+SceneParameters sceneParameters(const ParameterValues& v) {
+  SceneParameters p;
+  p.scene = sceneId(v.scalar<std::int64_t>(PERISTEP_VR_SCENE));
+  p.grid.nx = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_NX));
+  p.grid.ny = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_NY));
+  p.grid.Lx = v.scalar<double>(PERISTEP_VR_LX);
+  p.grid.Ly = v.scalar<double>(PERISTEP_VR_LY);
+  p.grid.deltaOverH = v.scalar<double>(PERISTEP_VR_DELTA_OVER_H);
+  p.grid.jitter = v.scalar<double>(PERISTEP_VR_JITTER);
+  p.grid.seed = v.scalar<std::uint64_t>(PERISTEP_VR_SEED);
+  p.poissonRatio = v.scalar<double>(PERISTEP_VR_POISSON_RATIO);
+  p.modulusContrast = v.scalar<double>(PERISTEP_VR_MODULUS_CONTRAST);
+  p.crystalFraction = v.scalar<double>(PERISTEP_VR_CRYSTAL_FRACTION);
+  const auto xi = v.get<double>(PERISTEP_VR_XI);
+  p.xi.assign(xi.begin(), xi.end());
+  p.linearSolver = solverName(v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER));
+  return p;
+}
+
+const ComputedVariable* findComputed(fmi3ValueReference vr) {
+  const auto it = std::find_if(kComputed.begin(), kComputed.end(), [vr](const auto& c) { return c.vr == vr; });
+  return it == kComputed.end() ? nullptr : &*it;
+}
+
+}  // namespace peristep::fmi

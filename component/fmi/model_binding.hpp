@@ -1,0 +1,30 @@
+#pragma once
+// Maps PeriStep's variables onto the solver library, the only file of the FMI layer that knows
+// both: the SceneParameters a SceneModel is built from, and where every calculated parameter and
+// output is read from.
+#include <cstdint>
+#include <span>
+
+#include "fmi/parameter_values.hpp"
+#include "scenes/scene_model.hpp"
+
+namespace peristep::fmi {
+
+SceneParameters sceneParameters(const ParameterValues& values);
+
+// What has to exist before a computed variable can be read.
+enum class Needs { Parameters, Model, Solution };
+
+struct ComputedVariable {
+  fmi3ValueReference vr;
+  Needs needs;
+  // The reader of the variable's type; writes every element (`model` is null only when needs is
+  // Parameters).
+  void (*readFloat64)(const ParameterValues&, const SceneModel*, std::span<double>) = nullptr;
+  void (*readInt32)(const ParameterValues&, const SceneModel*, std::span<std::int32_t>) = nullptr;
+};
+
+// nullptr for a variable that is not computed (parameters, inputs, the independent variable).
+const ComputedVariable* findComputed(fmi3ValueReference vr);
+
+}  // namespace peristep::fmi

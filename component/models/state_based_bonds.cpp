@@ -1,0 +1,62 @@
+#include "models/state_based_bonds.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/errors.hpp"
+#include "geometry/neighbours.hpp"
+#include "models/state_based_potentials.hpp"
+#include "quadrature/partial_area.hpp"
+
+namespace peristep {
+
+StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBondOptions& o) {
+  const std::size_t n = cloud.size();
+  const double h = cloud.h, eps = o.horizon;
+  require(n > 0, "state-based bonds: empty point cloud");
+  require(std::isfinite(h) && h > 0, "state-based bonds: the cloud has no grid spacing");
+  require(std::isfinite(eps) && eps >= h,
+          "state-based bonds: horizon must be at least the grid spacing (eps = " + std::to_string(eps) +
+              ", h = " + std::to_string(h) + ")");
+  require(o.omega.empty() || o.omega.size() == n, "state-based bonds: omega needs one value per point");
+  require(o.stiffness.empty() || o.stiffness.size() == n, "state-based bonds: stiffness needs one value per point");
+
+  StateBasedBonds b;
+  b.horizon = eps;
+  b.cellArea = h * h;
+  b.omega = o.omega.empty() ? std::vector<double>(n, 1.0) : o.omega;
+  b.kappa = o.stiffness.empty() ? std::vector<double>(n, 1.0) : o.stiffness;
+  for (std::size_t p = 0; p < n; ++p) {
+    require(b.omega[p] >= 0.0 && b.omega[p] <= 1.0, "state-based bonds: omega must lie in [0, 1]");
+    require(std::isfinite(b.kappa[p]) && b.kappa[p] > 0.0, "state-based bonds: stiffness factors must be positive");
+  }
+
+  const Neighbours nb = findNeighbours(cloud, eps);
+  b.offset.assign(n + 1, 0);
+  b.neighbour.reserve(nb.bonds());
+  for (auto* v : {&b.qx, &b.qy, &b.w, &b.ws}) v->reserve(nb.bonds());
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
+      const std::uint32_t j = nb.index[k];
+      const double dx = cloud.x[j] - cloud.x[i], dy = cloud.y[j] - cloud.y[i];
+      const double L = std::hypot(dx, dy);
+      const double J = influenceJ(L / eps);
+      if (J <= 1e-12) continue;
+      if (bondCrossesAny(cloud.x[i], cloud.y[i], cloud.x[j], cloud.y[j], o.cuts)) continue;
+      const double base = b.omega[j] * J * b.cellArea * partialAreaFraction(dx, dy, h, eps);
+      // Two-point modulus: harmonic mean, as for the LPS model (DESIGN 5.1), so that a bond between a
+      // soft and a stiff point is as soft as a series spring.
+      const double kij = 2.0 * b.kappa[i] * b.kappa[j] / (b.kappa[i] + b.kappa[j]);
+      const double sq = std::sqrt(L);
+      b.neighbour.push_back(j);
+      b.qx.push_back(dx / (L * sq));
+      b.qy.push_back(dy / (L * sq));
+      b.w.push_back(kij * base);
+      b.ws.push_back(base * sq);
+    }
+    b.offset[i + 1] = b.neighbour.size();
+  }
+  return b;
+}
+
+}  // namespace peristep

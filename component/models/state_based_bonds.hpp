@@ -1,0 +1,40 @@
+#pragma once
+// Per-bond constants of the finite-difference discretization of 001 Sec. 4 and 6 (node-centred square
+// cells of side h, partial-area quadrature 001:(103)), precomputed once per geometry.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/point_cloud.hpp"
+#include "geometry/segments.hpp"
+
+namespace peristep {
+
+struct StateBasedBondOptions {
+  double horizon = 0;                // eps [m]
+  std::vector<double> omega;         // boundary function 001:(2)-(4) per point; empty: 1 everywhere
+  std::vector<double> stiffness;     // per-point modulus factor kappa (heterogeneous plates); empty: 1
+  std::vector<Segment> cuts;         // pre-cracks: bonds crossing them are left out
+};
+
+// Structure of arrays, CSR by point. For bond (i, j) with xi = x_j - x_i, L = |xi|, e = xi/L:
+//   q  = e/sqrt(L), so that r = sqrt(L) S = (u_j - u_i) . q   (the argument of f, 001:(3))
+//   w  = kappa_ij omega_j J(L/eps) V_j Vbar_ij      (tensile weight; kappa_ij harmonic mean of kappa)
+//   ws = omega_j J(L/eps) V_j Vbar_ij sqrt(L)       (hydrostatic weight, 001:(2), (15))
+// Bonds with J = 0 (L >= eps) carry no force and are not stored.
+struct StateBasedBonds {
+  double horizon = 0, cellArea = 0;
+  std::vector<std::size_t> offset;      // size points + 1
+  std::vector<std::uint32_t> neighbour;
+  std::vector<double> qx, qy, w, ws;
+  std::vector<double> omega, kappa;     // per point
+
+  std::size_t points() const { return offset.size() - 1; }
+  std::size_t bonds() const { return neighbour.size(); }
+};
+
+// The cloud must be a lattice of spacing cloud.h (the cell of each node is the h x h square around it).
+// Throws InvalidInput for a horizon below h or per-point arrays of the wrong size or range.
+StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBondOptions& options);
+
+}  // namespace peristep

@@ -1,0 +1,22 @@
+#pragma once
+// The hot loops of the state-based force 001:(14)-(15) over a range of points, compiled for several
+// instruction sets (chosen at run time: AVX-512, AVX2+FMA or the x86-64 baseline), so that the
+// library stays portable while the bond loop uses the widest vectors the machine has.
+#include <cstddef>
+#include <cstdint>
+
+namespace peristep::kernels {
+
+struct ForceArgs {
+  const std::size_t* offset;
+  const std::uint32_t* neighbour;
+  const double *qx, *qy, *w, *ws, *omega;
+  double beta, tensileScale, hydroScale;
+  const double* kg1;  // kappa g'(theta) per point; null: no hydrostatic force
+};
+
+// For i in [i0, i1), with r = (u_j - u_i).q over the bonds of i:
+//   f_i = omega_i [tensileScale sum w r exp(-beta r^2) q + hydroScale sum ws (kg1_i + kg1_j) q].
+void stateBasedForce(const ForceArgs& a, std::size_t i0, std::size_t i1, const double* u, double* f);
+
+}  // namespace peristep::kernels

@@ -1,0 +1,41 @@
+#pragma once
+// Energy bookkeeping of a dynamic fracture run (001 Sec. 6.1.1): kinetic and elastic energy, work of
+// the loads, peridynamic energy of the crack zone Z > 1 (001:(104)) and crack length.
+#include <vector>
+
+#include "scenes/dynamic_scene.hpp"
+#include "solvers/time_integrator.hpp"
+
+namespace peristep {
+
+struct EnergyRecord {
+  double time = 0;
+  double kinetic = 0, elastic = 0, externalWork = 0;  // [J per m of thickness]
+  double fractureEnergy = 0;   // P.E.: tensile energy of the points of D with Z > 1
+  double crackLength = 0;      // sum over pre-cracks of the growth of their Z > 1 zone beyond the tip [m]
+  double maxDamage = 0;        // max Z over D
+  // Energy balance residual against the initial record: kinetic + elastic - work - (kinetic0 + elastic0),
+  // zero when energy is conserved.
+  double balance(const EnergyRecord& initial) const {
+    return kinetic + elastic - externalWork - (initial.kinetic + initial.elastic);
+  }
+};
+
+class FractureDiagnostics {
+ public:
+  explicit FractureDiagnostics(DynamicScene& scene);
+
+  EnergyRecord measure(const TimeIntegrator& integrator);
+  const std::vector<double>& damage() const { return Z_; }  // Z of the last measure()
+
+  // Crack growth: the points of D with Z > 1 are split among the pre-cracks by a breadth-first search
+  // over lattice neighbours started from those within eps of each crack tip; the length of crack c is
+  // the largest advance (x - tip) . direction over its points.
+  std::vector<double> crackLengths() const;
+
+ private:
+  DynamicScene& scene_;
+  std::vector<double> Z_, energyDensity_;
+};
+
+}  // namespace peristep

@@ -1,0 +1,55 @@
+// peristep: runs the PeriStep FMU through its C ABI only (see commands/ for what each subcommand does).
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "commands/commands.hpp"
+#include "host_errors.hpp"
+
+using namespace peristep::host;
+
+int main(int argc, char** argv) {
+  CLI::App app{"peristep: drive the PeriStep peridynamic fracture component (an FMI 3.0 co-simulation FMU)"};
+  app.set_version_flag("--version", PERISTEP_VERSION);
+  app.require_subcommand(1);
+
+  InfoOptions info{PERISTEP_DEFAULT_FMU};
+  RunOptions run{{}, PERISTEP_DEFAULT_FMU, {}, false};
+  ConvergenceOptions convergence{{}, PERISTEP_DEFAULT_FMU, {}, false};
+  const std::string fmuHelp = "FMU archive (.fmu) or unpacked FMU directory";
+
+  CLI::App* infoCmd = app.add_subcommand("info", "list the variables a scene file can name");
+  infoCmd->add_option("fmu", info.fmu, fmuHelp)->capture_default_str();
+
+  CLI::App* runCmd = app.add_subcommand("run", "run a loading scenario; results to HDF5 with an XDMF sidecar");
+  runCmd->add_option("scene", run.scene, "scene file (TOML); without one, the built-in default scene");
+  runCmd->add_option("--fmu", run.fmu, fmuHelp)->capture_default_str();
+  runCmd->add_option("--out", run.out, "HDF5 result file (default: the scene's [output] file)");
+  runCmd->add_flag("-v,--verbose", run.verbose, "echo every message the component logs");
+
+  CLI::App* convCmd = app.add_subcommand("convergence", "refinement study over the scene's [convergence] levels");
+  convCmd->add_option("scene", convergence.scene, "scene file (TOML) with [convergence] levels")->required();
+  convCmd->add_option("--fmu", convergence.fmu, fmuHelp)->capture_default_str();
+  convCmd->add_option("--out", convergence.out, "CSV table (default: the scene's [output] csv); plot beside it");
+  convCmd->add_flag("-v,--verbose", convergence.verbose, "echo every message the component logs");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help, --version
+    std::cerr << "peristep: " << e.what() << " (see peristep --help)\n";
+    return kExitInputError;
+  }
+
+  try {
+    if (infoCmd->parsed()) return infoCommand(info);
+    if (runCmd->parsed()) return runCommand(run);
+    return convergenceCommand(convergence);
+  } catch (const InputError& e) {
+    std::cerr << "peristep: " << e.what() << '\n';
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    std::cerr << "peristep: " << e.what() << '\n';
+    return kExitRunError;
+  }
+}

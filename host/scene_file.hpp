@@ -1,0 +1,55 @@
+#pragma once
+// A scene file (TOML) names variables of the model description and says how to load the component:
+//
+//   [parameters]   name = value     numbers, integers, arrays for array variables (xi = [0.5]),
+//                                   enumeration items by name (scene = "smooth")
+//   [loading]      input = "loadFactor", from = 0.0, to = 1.0, steps = 4, startTime = 0.0, stopTime = 1.0
+//   [output]       file = "run.h5"  (HDF5 written by `peristep run`), csv = "study.csv" (`peristep convergence`)
+//   [convergence]  levels = [8, 16, 32, 64]   (nx = ny = level + 1)
+//
+// Everything is checked against the model description while parsing, so a scene that parses can
+// be applied to the component without a name or type error. Problems throw InputError with one
+// line "file:line: [table] key: problem".
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "model_description.hpp"
+#include "variable_values.hpp"
+
+namespace peristep::host {
+
+struct Setting {
+  Variable variable;
+  Values values;
+};
+
+// One fmi3DoStep per increment; increment k of n (k = 1..n) holds the input at from + k (to - from) / n.
+struct Loading {
+  std::optional<Variable> input;  // none: the component's inputs keep their start values
+  double from = 0, to = 0;
+  std::uint64_t steps = 1;
+  double startTime = 0, stopTime = 1;
+};
+
+struct Scene {
+  std::string source;              // file name (or "<built-in default scene>") for messages
+  std::vector<Setting> parameters; // file order, plus structural parameters implied by array lengths
+  Loading loading;
+  std::string outputFile;          // [output].file, empty when not given
+  std::string csvFile;             // [output].csv, empty when not given
+  std::vector<std::uint64_t> levels;  // [convergence].levels, empty when not given
+
+  const Setting* setting(std::string_view name) const;
+};
+
+Scene parseScene(std::string_view toml, const std::string& source, const ModelDescription& md);
+Scene readScene(const std::filesystem::path& file, const ModelDescription& md);
+
+// Text of a value for messages and HDF5 attributes: enumeration items by name, arrays as [a, b].
+std::string describeValues(const Setting& s, const ModelDescription& md);
+
+}  // namespace peristep::host

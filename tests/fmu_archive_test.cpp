@@ -1,0 +1,54 @@
+// PeriStep.fmu unpacked with libzip: exactly the model description, the binary and the
+// documentation, byte for byte the files they were packed from.
+#include <zip.h>
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace {
+
+std::string readFile(const char* path) {
+  std::ifstream in(path, std::ios::binary);
+  REQUIRE(in);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Every entry of the archive: name -> content.
+std::map<std::string, std::string> unpack(const char* path) {
+  int error = 0;
+  zip_t* archive = zip_open(path, ZIP_RDONLY | ZIP_CHECKCONS, &error);
+  REQUIRE(archive != nullptr);
+  std::map<std::string, std::string> entries;
+  const zip_int64_t n = zip_get_num_entries(archive, 0);
+  for (zip_int64_t k = 0; k < n; ++k) {
+    zip_stat_t st;
+    REQUIRE(zip_stat_index(archive, static_cast<zip_uint64_t>(k), 0, &st) == 0);
+    zip_file_t* file = zip_fopen_index(archive, static_cast<zip_uint64_t>(k), 0);
+    REQUIRE(file != nullptr);
+    std::string content(st.size, '\0');
+    const zip_int64_t read = zip_fread(file, content.data(), st.size);
+    zip_fclose(file);
+    REQUIRE(read == static_cast<zip_int64_t>(st.size));
+    entries.emplace(st.name, std::move(content));
+  }
+  zip_close(archive);
+  return entries;
+}
+
+}  // namespace
+
+TEST_CASE("PeriStep.fmu holds the model description, the binary and the documentation", "[fmu]") {
+  const auto entries = unpack(PERISTEP_FMU_ARCHIVE);
+  REQUIRE(entries.size() == 3);
+  REQUIRE(entries.count("modelDescription.xml") == 1);
+  REQUIRE(entries.count("binaries/x86_64-linux/PeriStep.so") == 1);
+  REQUIRE(entries.count("documentation/index.html") == 1);
+  CHECK(entries.at("modelDescription.xml") == readFile(PERISTEP_GENERATED_MODEL_DESCRIPTION));
+  CHECK(entries.at("binaries/x86_64-linux/PeriStep.so") == readFile(PERISTEP_SO_PATH));
+  CHECK(entries.at("documentation/index.html") == readFile(PERISTEP_FMU_DOCUMENTATION));
+  CHECK(entries.at("binaries/x86_64-linux/PeriStep.so").substr(0, 4) == "\x7f" "ELF");
+}
