@@ -27,7 +27,7 @@ BondState makeBondState(const PointCloud& c, const Neighbours& nb, const std::ve
                                               nb.index.begin());
       if (c.isVoid(p) || c.isVoid(q)) {
         s.intact[k] = 0;
-      } else if (c.inDomain(p) || c.inDomain(q)) {
+      } else if (c.inDomain(p) && c.inDomain(q)) {
         const double lam = harmonicMean(lambda[p], lambda[q]), m = harmonicMean(mu[p], mu[q]);
         const double g = 0.5 * (G[p] + G[q]);
         s.criticalStretch[k] = std::sqrt(g / (4.0 * (lam - m) * beta + 8.0 * m * beta));

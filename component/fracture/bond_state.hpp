@@ -22,9 +22,10 @@ struct BondState {
   std::size_t bonds() const { return intact.size(); }
 };
 
-// Bonds to Void points start broken and stay so; bonds with no end in the domain never break (the
-// Dirichlet collar moves as prescribed). s0 = sqrt(G_ij / (4(lambda_ij-mu_ij) beta' + 8 mu_ij beta)),
-// beta = beta' = 3 delta/(4 pi), with harmonic-mean moduli and arithmetic-mean G (000:(2.25)-(2.26)).
+// Bonds to Void points start broken and stay so; only bonds between two domain points can break (the
+// Dirichlet collar is the grip: it moves as prescribed and does not tear off the specimen).
+// s0 = sqrt(G_ij / (4(lambda_ij-mu_ij) beta' + 8 mu_ij beta)), beta = beta' = 3 delta/(4 pi), with
+// harmonic-mean moduli and arithmetic-mean G (000:(2.25)-(2.26)).
 BondState makeBondState(const PointCloud& cloud, const Neighbours& nb, const std::vector<double>& lambda,
                         const std::vector<double>& mu, const std::vector<double>& fractureEnergy);
 

@@ -159,7 +159,6 @@ LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vect
           double selfU[2] = {0.0, 0.0}, selfTheta = 0.0;
           for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
             const std::uint32_t q = nb.index[k];
-            if (c.isVoid(q) && !frame.broken) continue;
             const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
             const double r2 = z[0] * z[0] + z[1] * z[1];
             const double K = lpsKernel(std::sqrt(r2), c.delta);

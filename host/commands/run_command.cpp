@@ -1,8 +1,10 @@
 // `peristep run [SCENE] [--fmu PATH] [--out FILE]`: one loading scenario, results to HDF5 + XDMF.
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
+#include "../damage_picture.hpp"
 #include "../fmu_loader.hpp"
 #include "../host_errors.hpp"
 #include "../progress.hpp"
@@ -61,6 +63,14 @@ void checkFinite(const StepValues& step, const ResultLayout& layout, std::uint64
       if (!std::isfinite(v)) complain(layout.fields[i].name);
 }
 
+// The damage picture of the last finished step, next to the HDF5 file `h5`; nothing when no step
+// finished or the model lacks the fields it is drawn from.
+std::optional<std::filesystem::path> writePicture(const std::filesystem::path& h5, const ResultLayout& layout,
+                                                  const std::vector<StepValues>& recorded) {
+  if (recorded.empty()) return std::nullopt;
+  return writeDamagePicture(std::filesystem::path(h5).replace_extension(".png"), layout, recorded.back());
+}
+
 }  // namespace
 
 int runCommand(const RunOptions& options) {
@@ -98,15 +108,26 @@ int runCommand(const RunOptions& options) {
   } catch (const RunError& e) {
     const std::filesystem::path kept = files.abandon();
     std::string message = e.what();
-    message += kept.empty() ? "; no results written, " + out.string() + " left as it was"
-                            : "; the " + std::to_string(recorded.size()) + " finished step(s) are in " +
-                                  kept.string() + ", " + out.string() + " left as it was";
+    if (kept.empty()) {
+      message += "; no results written, " + out.string() + " left as it was";
+    } else {
+      message += "; the " + std::to_string(recorded.size()) + " finished step(s) are in " + kept.string();
+      try {  // the picture is a courtesy here: failing to draw it must not hide the run's own error
+        if (const auto png = writePicture(kept, layout, recorded)) message += " (picture " + png->string() + ")";
+      } catch (const RunError& pictureError) {
+        message += std::string(" (no picture: ") + pictureError.what() + ")";
+      }
+      message += ", " + out.string() + " left as it was";
+    }
     throw RunError(message);
   }
+  const auto png = writePicture(files.hdf5File(), layout, recorded);
 
   printSummary(layout, recorded);
   std::cout << "wrote " << files.hdf5File().string() << " (" << recorded.size() << " steps, " << layout.ny << " x "
-            << layout.nx << " points) and " << files.xdmfFile().string() << '\n';
+            << layout.nx << " points)" << (png ? ", " : " and ") << files.xdmfFile().string();
+  if (png) std::cout << " and " << png->string();
+  std::cout << '\n';
   return 0;
 }
 

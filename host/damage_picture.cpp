@@ -1,0 +1,60 @@
+#include "damage_picture.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "host_errors.hpp"
+
+namespace peristep::host {
+
+namespace {
+
+Rgb blend(const Rgb& a, const Rgb& b, double t) {
+  const auto mix = [t](std::uint8_t x, std::uint8_t y) {
+    return static_cast<std::uint8_t>(std::lround(x + t * (static_cast<double>(y) - x)));
+  };
+  return {mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)};
+}
+
+// Index of the grid field called `name` in layout.fields.
+std::optional<std::size_t> gridField(const ResultLayout& layout, const std::string& name) {
+  for (std::size_t i = 0; i < layout.fields.size(); ++i)
+    if (layout.fields[i].name == name && layout.onGrid(layout.fields[i])) return i;
+  return std::nullopt;
+}
+
+}  // namespace
+
+RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
+                       const std::vector<double>& youngsModulus) {
+  const std::size_t n = ny * nx;
+  if (damage.size() != n || (!youngsModulus.empty() && youngsModulus.size() != n))
+    throw RunError("damage picture: the fields do not have " + std::to_string(ny) + " x " + std::to_string(nx) + " values");
+  RgbImage image{ny, nx, std::vector<Rgb>(n, kUniformPhase)};
+
+  if (!youngsModulus.empty()) {
+    const auto [lo, hi] = std::minmax_element(youngsModulus.begin(), youngsModulus.end());
+    // A single material has no phases to tell apart; rounding in the component must not split it.
+    if (*hi - *lo > 1e-9 * std::max(std::abs(*hi), std::abs(*lo))) {
+      const double mid = 0.5 * (*lo + *hi);
+      for (std::size_t i = 0; i < n; ++i) image.pixels[i] = youngsModulus[i] > mid ? kStiffPhase : kSoftPhase;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(damage[i] >= kCrackDamage)) continue;
+    const double t = (std::min(damage[i], 1.0) - kCrackDamage) / (1.0 - kCrackDamage);
+    image.pixels[i] = blend(kCrackOnset, kCrackFull, t);
+  }
+  return image;
+}
+
+std::optional<std::filesystem::path> writeDamagePicture(const std::filesystem::path& file, const ResultLayout& layout,
+                                                        const StepValues& step) {
+  const auto damage = gridField(layout, "damage"), modulus = gridField(layout, "youngsModulus");
+  if (!damage || !modulus) return std::nullopt;
+  writePng(file, damagePicture(layout.ny, layout.nx, step.fields[*damage], step.fields[*modulus]));
+  return file;
+}
+
+}  // namespace peristep::host

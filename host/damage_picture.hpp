@@ -1,0 +1,33 @@
+#pragma once
+// The picture `peristep run` leaves next to its results: the material (two phases told apart by
+// Young's modulus) in blues, and the cracks drawn over it in red to yellow.
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "png_writer.hpp"
+#include "result_layout.hpp"
+
+namespace peristep::host {
+
+// Damage is the broken fraction of a point's bonds, 000:(3.23). A point on a crack face loses the
+// bonds that cross the crack, roughly half of its family (somewhat fewer on coarse grids), while a
+// point near but off the crack loses only a few; 0.35 keeps the faces and leaves those out.
+inline constexpr double kCrackDamage = 0.35;
+
+inline constexpr Rgb kStiffPhase{150, 200, 245};  // E above the midpoint of the image's range
+inline constexpr Rgb kSoftPhase{20, 45, 120};     // E at or below it
+inline constexpr Rgb kUniformPhase{60, 110, 190}; // one material (or no modulus to tell phases by)
+inline constexpr Rgb kCrackOnset{190, 30, 0};     // damage == kCrackDamage
+inline constexpr Rgb kCrackFull{255, 215, 60};    // damage == 1: brighter with more damage
+
+// [ny][nx] damage and Young's modulus (empty: the model has none) to one colour per point.
+RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
+                       const std::vector<double>& youngsModulus);
+
+// Writes the picture of `step` when the layout records both `damage` and `youngsModulus` on the
+// grid; returns the file written, or nothing when the model lacks either output.
+std::optional<std::filesystem::path> writeDamagePicture(const std::filesystem::path& file, const ResultLayout& layout,
+                                                        const StepValues& step);
+
+}  // namespace peristep::host
