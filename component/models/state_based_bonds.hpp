@@ -21,7 +21,9 @@ struct StateBasedBondOptions {
 //   q  = e/sqrt(L), so that r = sqrt(L) S = (u_j - u_i) . q   (the argument of f, 001:(3))
 //   w  = kappa_ij omega_j J(L/eps) V_j Vbar_ij      (tensile weight; kappa_ij harmonic mean of kappa)
 //   ws = omega_j J(L/eps) V_j Vbar_ij sqrt(L)       (hydrostatic weight, 001:(2), (15))
-// Bonds with J = 0 (L >= eps) carry no force and are not stored.
+// The unit vector, |xi|, J and the partial-area weight enter the force only through these products,
+// so a bond update of the tensile force reads 28 bytes (index, q, w). Bonds with J = 0 (L >= eps)
+// carry no force and are not stored.
 struct StateBasedBonds {
   double horizon = 0, cellArea = 0;
   std::vector<std::size_t> offset;      // size points + 1
