@@ -18,6 +18,11 @@ struct GridSpec {
 
   double h() const { return Lx / static_cast<double>(nx - 1); }
   double delta() const { return deltaOverH * h(); }
+  // Same cloud: the seed matters only for a jittered one.
+  bool sameCloud(const GridSpec& o) const {
+    return nx == o.nx && ny == o.ny && Lx == o.Lx && Ly == o.Ly && deltaOverH == o.deltaOverH &&
+           jitter == o.jitter && collar == o.collar && (jitter == 0.0 || seed == o.seed);
+  }
 };
 
 // Throws InvalidInput with a precise message when the spec cannot describe a valid cloud.

@@ -1,5 +1,9 @@
 #include "models/lps_discretization.hpp"
 
+#include <deque>
+#include <mutex>
+#include <utility>
+
 #include "core/timer.hpp"
 #include "quadrature/optimization_weights.hpp"
 
@@ -16,6 +20,24 @@ LpsDiscretization LpsDiscretization::build(const GridSpec& spec) {
   d.weights = optimizationWeights(d.cloud, d.neighbours, d.dofs.thetaPoints());
   d.weightSeconds = clock.lap();
   return d;
+}
+
+std::shared_ptr<const LpsDiscretization> sharedDiscretization(const GridSpec& spec) {
+  static std::mutex mutex;
+  static std::deque<std::pair<GridSpec, std::shared_ptr<const LpsDiscretization>>> recent;
+  constexpr std::size_t kKept = 2;
+  std::lock_guard lock(mutex);
+  for (auto it = recent.begin(); it != recent.end(); ++it)
+    if (it->first.sameCloud(spec)) {
+      auto entry = *it;
+      recent.erase(it);
+      recent.push_front(entry);
+      return entry.second;
+    }
+  auto built = std::make_shared<const LpsDiscretization>(LpsDiscretization::build(spec));
+  recent.emplace_front(spec, built);
+  if (recent.size() > kKept) recent.pop_back();
+  return built;
 }
 
 }  // namespace peristep

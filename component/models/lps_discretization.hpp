@@ -1,6 +1,7 @@
 #pragma once
 // What depends on the point cloud only: neighbours, quadrature weights, unknown numbering.
 // Built once per geometry and shared by every sample and load step on it.
+#include <memory>
 #include <vector>
 
 #include "geometry/neighbours.hpp"
@@ -18,5 +19,10 @@ struct LpsDiscretization {
 
   static LpsDiscretization build(const GridSpec& spec);
 };
+
+// The discretization of `spec`, built on the first request and handed out again for the same cloud, so
+// that a sample loop (one component instance reset between samples) builds geometry, neighbours and
+// weights once per study. Keeps the two most recently used clouds; thread-safe.
+std::shared_ptr<const LpsDiscretization> sharedDiscretization(const GridSpec& spec);
 
 }  // namespace peristep

@@ -13,7 +13,7 @@ InterfaceCrackScene::InterfaceCrackScene(const GridSpec& grid, double nu, double
     : field_(2.0 + std::sin(xi1), 2.0 + std::sin(xi2), nu) {
   require(std::isfinite(xi1) && std::isfinite(xi2), "random coordinates xi must be finite");
   require(xi2 >= -1.0 && xi2 <= 1.0, "Test 3: xi2 is uniform on [-1, 1] (got " + std::to_string(xi2) + ")");
-  disc_ = std::make_shared<const LpsDiscretization>(LpsDiscretization::build(grid));
+  disc_ = sharedDiscretization(grid);
   const PointCloud& c = disc_->cloud;
   const double tiny = 1e-9 * c.h;
 

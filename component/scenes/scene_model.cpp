@@ -1,17 +1,12 @@
 #include "scenes/scene_model.hpp"
 
 #include <cmath>
-#include <functional>
 
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
-#include "fracture/bond_state.hpp"
 #include "models/lps_material.hpp"
-#include "scenes/glass_ceramic.hpp"
-#include "scenes/interface_crack.hpp"
-#include "scenes/manufactured.hpp"
+#include "scenes/scene_runner.hpp"
 #include "solvers/linear_solver.hpp"
-#include "solvers/static_lps.hpp"
 
 namespace peristep {
 
@@ -51,141 +46,6 @@ void validate(const SceneParameters& p) {
   makeLinearSolver(p.linearSolver);  // throws on an unknown name
 }
 
-namespace {
-
-// One scene behind a common face; SceneModel keeps the fields the FMI layer reads.
-class Runner {
- public:
-  virtual ~Runner() = default;
-  virtual void advance(const SceneInputs& in) = 0;
-  virtual std::vector<double> ux() const = 0;
-  virtual std::vector<double> uy() const = 0;
-  virtual std::vector<double> damage() const { return {}; }
-  virtual double errorL2() const { return 0.0; }
-  virtual double reactionForce() const { return 0.0; }
-  virtual double crackLength() const { return 0.0; }
-  virtual double brokenBonds() const { return 0.0; }
-  virtual double fractureEnergy() const { return 0.0; }
-  virtual double toughnessKIC() const { return 0.0; }
-  virtual std::vector<std::uint8_t> saveState() const = 0;
-  virtual void restoreState(std::span<const std::uint8_t> bytes) = 0;
-};
-
-// Tests 1 and 2: linear, so the factorization is computed once and every step is one solve.
-class StaticRunner final : public Runner {
- public:
-  StaticRunner(const SceneParameters& p, const std::function<double(std::size_t)>& xi) {
-    if (p.scene == SceneId::Smooth)
-      scene_ = std::make_unique<SmoothScene>(p.poissonRatio, xi(0));
-    else
-      scene_ = std::make_unique<CompositeScene>(p.poissonRatio, xi(0), xi(1), p.modulusContrast);
-    auto disc = std::make_shared<const LpsDiscretization>(LpsDiscretization::build(p.grid));
-    lps_ = std::make_unique<StaticLps>(disc, *scene_, p.linearSolver);
-    const std::size_t n = disc->cloud.domain.size();
-    ux_.assign(n, 0.0);
-    uy_.assign(n, 0.0);
-  }
-  const ElasticScene& scene() const { return *scene_; }
-  const PointCloud& cloud() const { return lps_->discretization().cloud; }
-  void advance(const SceneInputs& in) override {
-    lps_->solve(in.loadFactor);
-    ux_ = lps_->ux();
-    uy_ = lps_->uy();
-    load_ = in.loadFactor;
-  }
-  std::vector<double> ux() const override { return ux_; }
-  std::vector<double> uy() const override { return uy_; }
-  double errorL2() const override { return lps_->errorL2At(ux_, uy_, load_); }
-  std::vector<std::uint8_t> saveState() const override {
-    ByteWriter w;
-    w.put(load_);
-    w.putArray(ux_);
-    w.putArray(uy_);
-    return w.take();
-  }
-  void restoreState(std::span<const std::uint8_t> bytes) override {
-    ByteReader r(bytes);
-    const double load = r.get<double>();
-    auto ux = r.getArray<double>(ux_.size());
-    auto uy = r.getArray<double>(uy_.size());
-    r.expectEnd();
-    load_ = load;
-    ux_ = std::move(ux);
-    uy_ = std::move(uy);
-  }
-
- private:
-  std::unique_ptr<ElasticScene> scene_;
-  std::unique_ptr<StaticLps> lps_;
-  std::vector<double> ux_, uy_;
-  double load_ = 0;
-};
-
-std::vector<double> onDomain(const PointCloud& c, const std::vector<double>& u, int component) {
-  std::vector<double> v;
-  v.reserve(c.domain.size());
-  for (std::size_t p : c.domain) v.push_back(u[2 * p + static_cast<std::size_t>(component)]);
-  return v;
-}
-
-class InterfaceCrackRunner final : public Runner {
- public:
-  InterfaceCrackRunner(const SceneParameters& p, const std::function<double(std::size_t)>& xi)
-      : scene_(p.grid, p.poissonRatio, xi(0), xi(1), p.linearSolver) {}
-  const PointCloud& cloud() const { return scene_.solver().discretization().cloud; }
-  void advance(const SceneInputs& in) override { scene_.solve(in.loadFactor); }
-  std::vector<double> ux() const override { return onDomain(cloud(), scene_.solver().displacement(), 0); }
-  std::vector<double> uy() const override { return onDomain(cloud(), scene_.solver().displacement(), 1); }
-  std::vector<double> damage() const override {
-    const auto& d = scene_.solver().discretization();
-    return damageField(scene_.solver().bonds(), d.cloud, d.neighbours);
-  }
-  double errorL2() const override { return scene_.errorL2(); }
-  double brokenBonds() const override {
-    const auto& d = scene_.solver().discretization();
-    return static_cast<double>(brokenPairs(scene_.solver().bonds(), d.cloud, d.neighbours));
-  }
-  std::vector<std::uint8_t> saveState() const override { return scene_.saveState(); }
-  void restoreState(std::span<const std::uint8_t> b) override { scene_.restoreState(b); }
-
- private:
-  InterfaceCrackScene scene_;
-};
-
-class GlassCeramicRunner final : public Runner {
- public:
-  explicit GlassCeramicRunner(const SceneParameters& p) : specimen_(spec(p)) {}
-  const GlassCeramicSpecimen& specimen() const { return specimen_; }
-  void advance(const SceneInputs& in) override { specimen_.advance(in.loadDisplacement); }
-  std::vector<double> ux() const override { return specimen_.ux(); }
-  std::vector<double> uy() const override { return specimen_.uy(); }
-  std::vector<double> damage() const override { return specimen_.damage(); }
-  double reactionForce() const override { return specimen_.reactionForce(); }
-  double crackLength() const override { return specimen_.crackShares().total(); }
-  double brokenBonds() const override {
-    const auto& d = specimen_.solver().discretization();
-    return static_cast<double>(brokenPairs(specimen_.solver().bonds(), d.cloud, d.neighbours));
-  }
-  double fractureEnergy() const override { return specimen_.energyReleaseRate() * specimen_.projectedCrackLength(); }
-  double toughnessKIC() const override { return specimen_.toughnessKIC(); }
-  std::vector<std::uint8_t> saveState() const override { return specimen_.saveState(); }
-  void restoreState(std::span<const std::uint8_t> b) override { specimen_.restoreState(b); }
-
- private:
-  static GlassCeramicSpec spec(const SceneParameters& p) {
-    GlassCeramicSpec s;
-    s.grid = p.grid;
-    s.crystalFraction = p.crystalFraction;
-    s.seed = p.grid.seed;
-    s.linearSolver = p.linearSolver;
-    s.phases.nu = p.poissonRatio;
-    return s;
-  }
-  GlassCeramicSpecimen specimen_;
-};
-
-}  // namespace
-
 struct SceneModel::Impl {
   std::unique_ptr<Runner> runner;
   std::vector<double> x, y, ux, uy, damage, E;
@@ -199,35 +59,34 @@ struct SceneModel::Impl {
   }
 };
 
+namespace {
+
+std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
+  switch (p.scene) {
+    case SceneId::Smooth:
+    case SceneId::Composite: return makeElasticRunner(p);
+    case SceneId::InterfaceCrack: return makeInterfaceCrackRunner(p);
+    case SceneId::GlassCeramic: return makeGlassCeramicRunner(p);
+  }
+  throw InvalidInput("unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
+}
+
+}  // namespace
+
 SceneModel::SceneModel(const SceneParameters& p) : impl_(std::make_unique<Impl>()) {
   validate(p);
   Impl& m = *impl_;
-  const std::function<double(std::size_t)> physical = [&](std::size_t k) { return xiScale(p.scene, k) * p.xi[k]; };
-  const PointCloud* cloud = nullptr;
-  if (p.scene == SceneId::Smooth || p.scene == SceneId::Composite) {
-    auto r = std::make_unique<StaticRunner>(p, physical);
-    cloud = &r->cloud();
-    for (std::size_t q : cloud->domain) m.E.push_back(r->scene().youngsModulus(cloud->x[q], cloud->y[q]));
-    m.runner = std::move(r);
-  } else if (p.scene == SceneId::InterfaceCrack) {
-    auto r = std::make_unique<InterfaceCrackRunner>(p, physical);
-    cloud = &r->cloud();
-    for (std::size_t q : cloud->domain) m.E.push_back(cloud->y[q] > -1e-9 * cloud->h ? 2 + std::sin(physical(0)) : 2 + std::sin(physical(1)));
-    m.runner = std::move(r);
-  } else {
-    auto r = std::make_unique<GlassCeramicRunner>(p);
-    cloud = &r->specimen().solver().discretization().cloud;
-    m.E = r->specimen().youngsModulus();
-    m.runner = std::move(r);
+  m.runner = makeRunner(p);
+  const PointCloud& cloud = m.runner->cloud();
+  for (std::size_t q : cloud.domain) {
+    m.x.push_back(cloud.x[q]);
+    m.y.push_back(cloud.y[q]);
   }
-  for (std::size_t q : cloud->domain) {
-    m.x.push_back(cloud->x[q]);
-    m.y.push_back(cloud->y[q]);
-  }
-  m.ux.assign(cloud->domain.size(), 0.0);
-  m.uy.assign(cloud->domain.size(), 0.0);
+  m.E = m.runner->youngsModulus();
+  m.ux.assign(cloud.domain.size(), 0.0);
+  m.uy.assign(cloud.domain.size(), 0.0);
   m.damage = m.runner->damage();
-  if (m.damage.empty()) m.damage.assign(cloud->domain.size(), 0.0);
+  if (m.damage.empty()) m.damage.assign(cloud.domain.size(), 0.0);
 }
 
 SceneModel::~SceneModel() = default;

@@ -1,0 +1,42 @@
+#pragma once
+// One built-in scene behind a common face: SceneModel owns a Runner and keeps the fields the FMI layer
+// reads. Each scene family lives in its own *_runner.cpp and is made by the factory declared here.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "geometry/point_cloud.hpp"
+#include "scenes/scene_model.hpp"
+
+namespace peristep {
+
+class Runner {
+ public:
+  virtual ~Runner() = default;
+  virtual const PointCloud& cloud() const = 0;
+  virtual void advance(const SceneInputs& in) = 0;
+  // Fields on the domain points, image order [ny][nx].
+  virtual std::vector<double> ux() const = 0;
+  virtual std::vector<double> uy() const = 0;
+  virtual std::vector<double> youngsModulus() const = 0;
+  virtual std::vector<double> damage() const { return {}; }  // empty: the scene cannot break
+  virtual double errorL2() const { return 0.0; }
+  virtual double reactionForce() const { return 0.0; }
+  virtual double crackLength() const { return 0.0; }
+  virtual double brokenBonds() const { return 0.0; }
+  virtual double fractureEnergy() const { return 0.0; }
+  virtual double toughnessKIC() const { return 0.0; }
+  virtual std::vector<std::uint8_t> saveState() const = 0;
+  virtual void restoreState(std::span<const std::uint8_t> bytes) = 0;
+};
+
+// `p` has been validated. Random coordinates enter in physical units (xiScale * xi).
+std::unique_ptr<Runner> makeElasticRunner(const SceneParameters& p);         // Tests 1 and 2
+std::unique_ptr<Runner> makeInterfaceCrackRunner(const SceneParameters& p);  // Test 3
+std::unique_ptr<Runner> makeGlassCeramicRunner(const SceneParameters& p);    // 000 Sec. 5
+
+// Component `component` (0: x, 1: y) of an interleaved per-point vector, on the domain points.
+std::vector<double> onDomain(const PointCloud& c, const std::vector<double>& u, int component);
+
+}  // namespace peristep
