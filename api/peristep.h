@@ -29,6 +29,11 @@ enum PeriStepValueReference {
   PERISTEP_VR_LINEAR_SOLVER = 18,    /* Enumeration (fmi3Get/SetInt64): enum PeriStepLinearSolver */
   PERISTEP_VR_XI = 19,               /* Float64 [nModes] */
   PERISTEP_VR_CRYSTAL_FRACTION = 24, /* Float64: glass-ceramic crystal area fraction f */
+  PERISTEP_VR_CORRELATION_LENGTH = 25, /* Float64, m: KL plate */
+  PERISTEP_VR_FIELD_STD = 26,          /* Float64: KL plate, standard deviation of the field g */
+  PERISTEP_VR_COVARIANCE = 27,         /* Enumeration: enum PeriStepCovariance */
+  PERISTEP_VR_FIELD_TRANSFORM = 28,    /* Enumeration: enum PeriStepFieldTransform */
+  PERISTEP_VR_PCA_REALIZATIONS = 29,   /* UInt64: glass-ceramic PCA field from this many realizations; 0: none */
 
   /* calculated parameters */
   PERISTEP_VR_XI_DISTRIBUTION = 20, /* Int32 [nModes]: enum PeriStepXiDistribution */
@@ -45,13 +50,27 @@ enum PeriStepValueReference {
   PERISTEP_VR_UY = 41,              /* Float64 [ny][nx], m */
   PERISTEP_VR_DAMAGE = 42,          /* Float64 [ny][nx] */
   PERISTEP_VR_YOUNGS_MODULUS = 43,  /* Float64 [ny][nx], Pa */
+  PERISTEP_VR_EXACT_MEAN_UX = 44,   /* Float64 [ny][nx], m: mean over xi of the exact solution */
+  PERISTEP_VR_EXACT_MEAN_UY = 45,   /* Float64 [ny][nx], m */
+  PERISTEP_VR_EXACT_STD_UX = 46,    /* Float64 [ny][nx], m: standard deviation over xi */
+  PERISTEP_VR_EXACT_STD_UY = 47,    /* Float64 [ny][nx], m */
+  PERISTEP_VR_HAS_EXACT_MOMENTS = 48, /* Int32: 1 when the four fields above are the scene's exact moments */
+  PERISTEP_VR_RETAINED_VARIANCE = 49, /* Float64: variance fraction of the retained KL / PCA modes */
   PERISTEP_VR_REACTION_FORCE = 50,  /* Float64, N/m */
   PERISTEP_VR_CRACK_LENGTH = 51,    /* Float64, m */
   PERISTEP_VR_BROKEN_BONDS = 52,    /* Float64 */
   PERISTEP_VR_STRAIN_ENERGY = 53,   /* Float64, J/m */
   PERISTEP_VR_FRACTURE_ENERGY = 54, /* Float64, J/m */
   PERISTEP_VR_TOUGHNESS_KIC = 55,   /* Float64, Pa m^0.5 */
-  PERISTEP_VR_ERROR_L2 = 56         /* Float64, m */
+  PERISTEP_VR_ERROR_L2 = 56,        /* Float64, m */
+  PERISTEP_VR_KINETIC_ENERGY = 57,  /* Float64, J/m: dynamic scenes */
+  PERISTEP_VR_EXTERNAL_WORK = 58,   /* Float64, J/m: work of the loads since the start (dynamic scenes) */
+  PERISTEP_VR_FORCE_EVALUATIONS = 59, /* Float64: force evaluations spent by the time integrator */
+
+  /* parameters of the dynamic scenes (5-7) */
+  PERISTEP_VR_TIME_INTEGRATOR = 60,       /* Enumeration (fmi3Get/SetInt64): enum PeriStepTimeIntegrator */
+  PERISTEP_VR_INTERNAL_TIME_STEP = 61,    /* Float64, s: central difference step; 0: the scene's */
+  PERISTEP_VR_INTEGRATOR_TOLERANCE = 62   /* Float64: relative tolerance of the SUNDIALS integrators */
 };
 
 /* Values of the enumeration PeriStep.Scene (variable "scene") */
@@ -59,7 +78,11 @@ enum PeriStepScene {
   PERISTEP_SCENE_SMOOTH = 1,          /* smooth manufactured solution (Fan et al., Test 1) */
   PERISTEP_SCENE_COMPOSITE = 2,       /* bimaterial composite (Fan et al., Test 2) */
   PERISTEP_SCENE_INTERFACE_CRACK = 3, /* crack on a bimaterial interface (Fan et al., Test 3) */
-  PERISTEP_SCENE_GLASS_CERAMIC = 4    /* pre-cracked glass-ceramic plate (Fan et al., Sec. 5) */
+  PERISTEP_SCENE_GLASS_CERAMIC = 4,   /* pre-cracked glass-ceramic plate (Fan et al., Sec. 5) */
+  PERISTEP_SCENE_PLEXIGLASS_CRACK = 5,     /* dynamic crack in a Plexiglass square (Jha-Lipton, Sec. 6.1) */
+  PERISTEP_SCENE_BENDING_ONE_NOTCH = 6,    /* dynamic three-point bending, one pre-crack (Jha-Lipton, Sec. 6.2) */
+  PERISTEP_SCENE_BENDING_TWO_NOTCHES = 7,  /* the same with two pre-cracks */
+  PERISTEP_SCENE_KL_PLATE = 8         /* plate with a Karhunen-Loeve random Young's modulus */
 };
 
 /* Values of the enumeration PeriStep.LinearSolver (variable "linearSolver") */
@@ -73,7 +96,27 @@ enum PeriStepLinearSolver {
 /* Values of the array "xiDistribution": the law of each standardized coordinate */
 enum PeriStepXiDistribution {
   PERISTEP_XI_NORMAL = 0,
-  PERISTEP_XI_UNIFORM = 1
+  PERISTEP_XI_UNIFORM = 1,
+  PERISTEP_XI_UNUSED = 2 /* the scene ignores this entry */
+};
+
+/* Values of the enumeration PeriStep.Covariance (variable "covariance") */
+enum PeriStepCovariance {
+  PERISTEP_COVARIANCE_EXPONENTIAL = 1, /* s^2 exp(-r/l) */
+  PERISTEP_COVARIANCE_GAUSSIAN = 2     /* s^2 exp(-r^2/l^2) */
+};
+
+/* Values of the enumeration PeriStep.FieldTransform (variable "fieldTransform") */
+enum PeriStepFieldTransform {
+  PERISTEP_FIELD_AFFINE = 1,     /* E = E0 (1 + g): refused where E <= 0 */
+  PERISTEP_FIELD_LOGNORMAL = 2   /* E = E0 exp(g - var/2): positive for every xi */
+};
+
+/* Values of the enumeration PeriStep.TimeIntegrator (variable "timeIntegrator", dynamic scenes) */
+enum PeriStepTimeIntegrator {
+  PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE = 1, /* explicit, fixed step internalTimeStep, stability-checked */
+  PERISTEP_INTEGRATOR_ARKODE_ERK = 2,         /* SUNDIALS ARKODE explicit adaptive Runge-Kutta */
+  PERISTEP_INTEGRATOR_CVODE_BDF = 3           /* SUNDIALS CVODE BDF, implicit, for stiff problems */
 };
 
 #endif /* peristep_h */

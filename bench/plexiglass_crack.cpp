@@ -6,7 +6,10 @@
 // What it shows: "rates" prints ||u1 - u2||, ||u2 - u3|| and the rate b every 2 us (001 Fig. 7);
 // "energy" prints kinetic, elastic and external work, their balance, the crack-zone energy P.E. and
 // G_c x crack length (001 Fig. 6), with wall time and peak memory, then the crack-zone energy per
-// unit length row by row along the crack at the end time.
+// unit length row by row along the crack at the end time, and a least-squares line P.E. = s G_c (l - d)
+// over the reports while the crack grows: s is the rate at which the crack zone gains energy per unit
+// of growth (the Griffith rate when s = 1), d the length whose energy the tip's process zone lacks.
+#include <cmath>
 #include <cstdio>
 #include <cstddef>
 #include <cstdlib>
@@ -98,11 +101,12 @@ int energy(double eps, double ratio, double T, const char* csvPath) {
               "P.E.", "l [m]", "Gc l", "PE/GE", "max Z");
   const Stopwatch clock;
   EnergyRecord e0;
-  std::vector<double> u;
+  std::vector<double> u, lengths, energies;  // while the crack grows
   const DynamicRunResult r = runDynamicScene(scene, o, [&](const TimeIntegrator& integrator, const EnergyRecord& e) {
     if (e.time == 0) e0 = e;
     u.assign(integrator.displacement(), integrator.displacement() + scene.problem->dofs());
     const double ge = Gc * e.crackLength;
+    if (e.crackLength > 0) lengths.push_back(e.crackLength), energies.push_back(e.fractureEnergy);
     std::printf("%6.1f %11.4e %11.4e %11.4e %11.3e %11.4e %9.5f %11.4e %7.3f %7.1f\n", e.time * 1e6, e.kinetic, e.elastic,
                 e.externalWork, e.balance(e0), e.fractureEnergy, e.crackLength, ge, ge > 0 ? e.fractureEnergy / ge : 0.0,
                 e.maxDamage);
@@ -116,6 +120,18 @@ int energy(double eps, double ratio, double T, const char* csvPath) {
               static_cast<double>(scene.model->bonds().bonds()) * static_cast<double>(r.stats.steps) / clock.seconds(),
               static_cast<double>(peakMemoryBytes()) / 1e6);
   crackProfile(scene, u);
+  if (lengths.size() >= 2) {
+    double ml = 0, me = 0, sll = 0, sle = 0;
+    const double n = static_cast<double>(lengths.size());
+    for (std::size_t k = 0; k < lengths.size(); ++k) ml += lengths[k] / n, me += energies[k] / n;
+    for (std::size_t k = 0; k < lengths.size(); ++k) {
+      sll += (lengths[k] - ml) * (lengths[k] - ml);
+      sle += (lengths[k] - ml) * (energies[k] - me);
+    }
+    const double slope = sle / sll, offset = ml - me / slope;
+    std::printf("growth: P.E. = %.4f G_c (l - %.3f mm) over %zu reports with l > 0 (l up to %.2f mm)\n", slope / Gc,
+                offset * 1e3, lengths.size(), lengths.back() * 1e3);
+  }
   return 0;
 }
 

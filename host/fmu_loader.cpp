@@ -10,7 +10,9 @@ namespace peristep::host {
 
 FmuLibrary::FmuLibrary(const std::filesystem::path& sharedLibrary) : path_(sharedLibrary) {
   // RTLD_LOCAL: two FMUs (or two copies of one) must not resolve each other's symbols.
-  handle_ = dlopen(sharedLibrary.c_str(), RTLD_NOW | RTLD_LOCAL);
+  // RTLD_NODELETE: the component's OpenMP worker threads outlive its instances (they idle in libgomp,
+  // which only the component loads); unmapping the library under them at dlclose crashes the process.
+  handle_ = dlopen(sharedLibrary.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
   if (!handle_) {
     const char* why = dlerror();
     throw InputError(sharedLibrary.string() + ": cannot load the FMU binary: " + (why ? why : "unknown error"));

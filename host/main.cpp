@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   InfoOptions info{PERISTEP_DEFAULT_FMU};
   RunOptions run{{}, PERISTEP_DEFAULT_FMU, {}, false};
   ConvergenceOptions convergence{{}, PERISTEP_DEFAULT_FMU, {}, false};
+  SampleOptions sample;
+  sample.fmu = PERISTEP_DEFAULT_FMU;
   const std::string fmuHelp = "FMU archive (.fmu) or unpacked FMU directory";
 
   CLI::App* infoCmd = app.add_subcommand("info", "list the variables a scene file can name");
@@ -33,6 +35,20 @@ int main(int argc, char** argv) {
   convCmd->add_option("--out", convergence.out, "CSV table (default: the scene's [output] csv); plot beside it");
   convCmd->add_flag("-v,--verbose", convergence.verbose, "echo every message the component logs");
 
+  CLI::App* sampleCmd =
+      app.add_subcommand("sample", "statistics over the random coordinates: tensor or Smolyak collocation, Monte Carlo");
+  sampleCmd->add_option("scene", sample.scene, "scene file (TOML)")->required();
+  sampleCmd->add_option("--rule", sample.rule, "tensor, smolyak or mc")->required();
+  sampleCmd->add_option("--level,--levels", sample.levels,
+                        "tensor: points per coordinate; smolyak: level (0 = one point); a list runs a study")
+      ->delimiter(',');
+  sampleCmd->add_option("--samples", sample.samples, "mc: number of samples; a list runs a study")->delimiter(',');
+  sampleCmd->add_flag("--nested", sample.nested, "smolyak: nested 1D rules instead of Gauss rules");
+  sampleCmd->add_option("--seed", sample.seed, "mc: seed (or first microstructure seed)")->capture_default_str();
+  sampleCmd->add_option("--fmu", sample.fmu, fmuHelp)->capture_default_str();
+  sampleCmd->add_option("--out", sample.out, "HDF5 study file (default: <scene>_<rule>.h5); CSV beside it");
+  sampleCmd->add_flag("-v,--verbose", sample.verbose, "echo every message the component logs");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -44,6 +60,7 @@ int main(int argc, char** argv) {
   try {
     if (infoCmd->parsed()) return infoCommand(info);
     if (runCmd->parsed()) return runCommand(run);
+    if (sampleCmd->parsed()) return sampleCommand(sample);
     return convergenceCommand(convergence);
   } catch (const InputError& e) {
     std::cerr << "peristep: " << e.what() << '\n';

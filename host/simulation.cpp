@@ -27,19 +27,23 @@ Attribute toAttribute(const Variable& v, const Values& values, const ModelDescri
 
 }  // namespace
 
-Simulation::Simulation(const FmuLibrary& library, const ModelDescription& md, const Scene& scene,
-                       const FmuInstance::Options& options)
-    : md_(md), scene_(scene), instance_(library, md, options), schedule_(loadSchedule(scene.loading)) {
+void setSceneParameters(FmuInstance& instance, const Scene& scene) {
   bool structural = false;
   for (const Setting& s : scene.parameters) structural |= s.variable.causality == Causality::StructuralParameter;
   if (structural) {
-    instance_.enterConfigurationMode();
+    instance.enterConfigurationMode();
     for (const Setting& s : scene.parameters)
-      if (s.variable.causality == Causality::StructuralParameter) instance_.set(s.variable, s.values);
-    instance_.exitConfigurationMode();
+      if (s.variable.causality == Causality::StructuralParameter) instance.set(s.variable, s.values);
+    instance.exitConfigurationMode();
   }
   for (const Setting& s : scene.parameters)
-    if (s.variable.causality != Causality::StructuralParameter) instance_.set(s.variable, s.values);
+    if (s.variable.causality != Causality::StructuralParameter) instance.set(s.variable, s.values);
+}
+
+Simulation::Simulation(const FmuLibrary& library, const ModelDescription& md, const Scene& scene,
+                       const FmuInstance::Options& options)
+    : md_(md), scene_(scene), instance_(library, md, options), schedule_(loadSchedule(scene.loading)) {
+  setSceneParameters(instance_, scene);
   instance_.enterInitializationMode(scene.loading.startTime, scene.loading.stopTime);
   instance_.exitInitializationMode();
 
@@ -115,6 +119,14 @@ double Simulation::readScalar(const std::string& name) {
   if (!v || v->type != VarType::Float64 || v->isArray())
     throw RunError(md_.modelName + " has no scalar Float64 variable " + name);
   return std::get<std::vector<double>>(instance_.get(*v, 1)).front();
+}
+
+std::int64_t Simulation::readInteger(const std::string& name) {
+  const Variable* v = md_.find(name);
+  const bool integer = v && (v->type == VarType::Int8 || v->type == VarType::Int16 || v->type == VarType::Int32 ||
+                             v->type == VarType::Int64);
+  if (!integer || v->isArray()) throw RunError(md_.modelName + " has no scalar integer variable " + name);
+  return std::get<std::vector<std::int64_t>>(instance_.get(*v, 1)).front();
 }
 
 }  // namespace peristep::host

@@ -12,6 +12,9 @@
 
 namespace peristep::host {
 
+// Structural parameters in Configuration Mode, the others in Instantiated, as FMI 3.0 allows.
+void setSceneParameters(FmuInstance& instance, const Scene& scene);
+
 class Simulation {
  public:
   Simulation(const FmuLibrary& library, const ModelDescription& md, const Scene& scene, const FmuInstance::Options& options);
@@ -26,6 +29,8 @@ class Simulation {
   // False once the component has asked to stop; the loop must not step again.
   bool mayContinue() const { return mayContinue_; }
   double readScalar(const std::string& name);
+  // A scalar integer variable (Int8..Int64); throws RunError when the model has none of that name.
+  std::int64_t readInteger(const std::string& name);
   void terminate() { instance_.terminate(); }
 
  private:

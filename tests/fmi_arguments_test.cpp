@@ -103,9 +103,9 @@ TEST_CASE("non-physical and non-finite values are refused when they are set", "[
   }
   SECTION("an enumeration value that does not exist") {
     requireRefused(s, "fmi3SetInt64",
-                   "scene (vr 10) = 7 is not a value of PeriStep.Scene (1 smooth, 2 composite, 3 interfaceCrack, 4 "
-                   "glassCeramic)",
-                   [&] { return s.setInt64(PERISTEP_VR_SCENE, 7); });
+                   "scene (vr 10) = 99 is not a value of PeriStep.Scene (1 smooth, 2 composite, 3 interfaceCrack, 4 "
+                   "glassCeramic, 5 plexiglassCrack",
+                   [&] { return s.setInt64(PERISTEP_VR_SCENE, 99); });
   }
   // A refused call stores nothing (and, per the standard, leaves the instance in Terminated).
   CHECK(s.getFloat64(PERISTEP_VR_POISSON_RATIO) == std::vector<double>{0.3});

@@ -33,7 +33,7 @@ std::vector<std::string> foreignIncludes(const fs::path& file, std::istream& tex
     if (m[1] == "\"") {
       ok = existsInside(kSource / "host", file.parent_path() / name) || existsInside(kSource / "api", kSource / "api" / name);
     } else {
-      ok = !fs::exists(kSource / "component" / name) && name.find("component/") == std::string::npos;
+      ok = !fs::is_regular_file(kSource / "component" / name) && name.find("component/") == std::string::npos;
     }
     if (!ok) bad.push_back(file.string() + ":" + std::to_string(number) + ": " + line);
   }

@@ -30,16 +30,15 @@ TEST_CASE("Test 3, nearly incompressible: first-order convergence to the interfa
   CHECK(std::log2(e32 / e64) >= 0.8);
 }
 
-TEST_CASE("Test 3, nu = 0.3: the error decreases under refinement (observed rate ~0.6, below the paper's 1)",
+TEST_CASE("Test 3, compressible (nu = 0.3): first-order convergence to the interface-crack field",
           "[fracture][test3]") {
-  // Measured at xi = (0.7, -0.4): rates 0.77 and 0.64 over pi/16..pi/64 (homogeneous xi = 0: 0.75, 0.62,
-  // then 0.56 to pi/128). The error is spread over the whole plate, not concentrated at the tip, and the
-  // free-surface terms are exact for traction-free linear fields; recorded in the README as an open
-  // discrepancy with the paper's O(delta).
+  // Used to be ~0.6 (0.77, 0.64): the free-surface terms of 000:(3.19) were applied within delta of the
+  // tip, where they put a net force O(sqrt(delta)) on the tip region. Since they apply only where the
+  // surface crosses the whole horizon (lps_system.cpp), the measured rates are 1.07, 1.07.
   const double e16 = test3Error(0.3, 16), e32 = test3Error(0.3, 32), e64 = test3Error(0.3, 64);
   INFO("errors " << e16 << " " << e32 << " " << e64);
-  CHECK(std::log2(e16 / e32) >= 0.5);
-  CHECK(std::log2(e32 / e64) >= 0.5);
+  CHECK(std::log2(e16 / e32) >= 0.8);
+  CHECK(std::log2(e32 / e64) >= 0.8);
 }
 
 TEST_CASE("Test 3 refuses xi2 outside its uniform range", "[fracture][test3][validation]") {

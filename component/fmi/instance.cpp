@@ -101,7 +101,7 @@ double Instance::doStep(double currentCommunicationPoint, double communicationSt
     require(next <= stopTime_ || sameTime(next, stopTime_),
             "a step to t = " + number(next) + " passes stopTime = " + number(stopTime_));
   Stopwatch watch;
-  solve();
+  solve(communicationStepSize);
   time_ = next;
   setSinceStep_ = false;
   if (logger_.eventsOn())
@@ -138,11 +138,11 @@ SceneModel& Instance::model() {
   return *model_;
 }
 
-void Instance::solve() {
+void Instance::solve(double stepSize) {
   SceneModel& m = model();
   solutionValid_ = false;
   m.advance(SceneInputs{values_.scalar<double>(PERISTEP_VR_LOAD_FACTOR),
-                        values_.scalar<double>(PERISTEP_VR_LOAD_DISPLACEMENT)});
+                        values_.scalar<double>(PERISTEP_VR_LOAD_DISPLACEMENT), time_, stepSize});
   solutionValid_ = true;
 }
 

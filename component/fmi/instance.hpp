@@ -60,7 +60,9 @@ class Instance {
  private:
   const Snapshot& owned(const Snapshot* s) const;
   SceneModel& model();
-  void solve();
+  // At the current inputs: a quasi-static scene solves; a dynamic one integrates from time_ over
+  // stepSize (0: outputs at time_, nothing integrated).
+  void solve(double stepSize = 0);
   // Checks the listed references and returns their total element count.
   template <class T>
   std::size_t resolve(std::span<const fmi3ValueReference> vrs, bool forSet) const;

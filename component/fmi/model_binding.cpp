@@ -19,8 +19,37 @@ SceneId sceneId(std::int64_t value) {
     case PERISTEP_SCENE_COMPOSITE: return SceneId::Composite;
     case PERISTEP_SCENE_INTERFACE_CRACK: return SceneId::InterfaceCrack;
     case PERISTEP_SCENE_GLASS_CERAMIC: return SceneId::GlassCeramic;
+    case PERISTEP_SCENE_KL_PLATE: return SceneId::KlPlate;
+    case PERISTEP_SCENE_PLEXIGLASS_CRACK: return SceneId::PlexiglassCrack;
+    case PERISTEP_SCENE_BENDING_ONE_NOTCH: return SceneId::BendingOneNotch;
+    case PERISTEP_SCENE_BENDING_TWO_NOTCHES: return SceneId::BendingTwoNotches;
   }
   throw InvalidInput("unknown scene " + std::to_string(value));
+}
+
+Covariance covariance(std::int64_t value) {
+  switch (value) {
+    case PERISTEP_COVARIANCE_EXPONENTIAL: return Covariance::Exponential;
+    case PERISTEP_COVARIANCE_GAUSSIAN: return Covariance::Gaussian;
+  }
+  throw InvalidInput("unknown covariance " + std::to_string(value));
+}
+
+FieldTransform fieldTransform(std::int64_t value) {
+  switch (value) {
+    case PERISTEP_FIELD_AFFINE: return FieldTransform::Affine;
+    case PERISTEP_FIELD_LOGNORMAL: return FieldTransform::Exponential;
+  }
+  throw InvalidInput("unknown field transform " + std::to_string(value));
+}
+
+std::string integratorName(std::int64_t value) {
+  switch (value) {
+    case PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE: return "central_difference";
+    case PERISTEP_INTEGRATOR_ARKODE_ERK: return "arkode_erk";
+    case PERISTEP_INTEGRATOR_CVODE_BDF: return "cvode_bdf";
+  }
+  throw InvalidInput("unknown time integrator " + std::to_string(value));
 }
 
 std::string solverName(std::int64_t value) {
@@ -41,20 +70,21 @@ void copyField(const std::vector<double>& field, std::span<double> out) {
   std::copy(field.begin(), field.end(), out.begin());
 }
 
-// Scalar outputs that no scene computes yet.
-void zero(P, M, std::span<double> out) { std::fill(out.begin(), out.end(), 0.0); }
+// An exact-moment field, or zeros where the scene has none (hasExactMoments tells which).
+void exactMoment(M m, int which, std::span<double> out) {
+  const std::vector<double> v = m->exactMoment(which);
+  if (v.empty()) std::fill(out.begin(), out.end(), 0.0);
+  else copyField(v, out);
+}
 
-const std::array<ComputedVariable, 15> kComputed{{
+const std::array<ComputedVariable, 24> kComputed{{
     {PERISTEP_VR_XI_DISTRIBUTION, Needs::Parameters, nullptr,
      [](P p, M, std::span<std::int32_t> out) {
-       const SceneId s = sceneId(p.scalar<std::int64_t>(PERISTEP_VR_SCENE));
+       const SceneParameters s = sceneParameters(p);
        for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<std::int32_t>(xiDistribution(s, k));
      }},
-    {PERISTEP_VR_XI_SCALE, Needs::Parameters,
-     [](P p, M, std::span<double> out) {
-       const SceneId s = sceneId(p.scalar<std::int64_t>(PERISTEP_VR_SCENE));
-       for (std::size_t k = 0; k < out.size(); ++k) out[k] = xiScale(s, k);
-     }},
+    // Needs the model: the PCA field's scales are its variances.
+    {PERISTEP_VR_XI_SCALE, Needs::Model, [](P, M m, std::span<double> out) { copyField(m->xiScales(), out); }},
     {PERISTEP_VR_X, Needs::Model, [](P, M m, std::span<double> out) { copyField(m->x(), out); }},
     {PERISTEP_VR_Y, Needs::Model, [](P, M m, std::span<double> out) { copyField(m->y(), out); }},
     {PERISTEP_VR_UX, Needs::Solution, [](P, M m, std::span<double> out) { copyField(m->ux(), out); }},
@@ -65,11 +95,23 @@ const std::array<ComputedVariable, 15> kComputed{{
     {PERISTEP_VR_REACTION_FORCE, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->reactionForce(); }},
     {PERISTEP_VR_CRACK_LENGTH, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->crackLength(); }},
     {PERISTEP_VR_BROKEN_BONDS, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->brokenBonds(); }},
-    {PERISTEP_VR_STRAIN_ENERGY, Needs::Solution, zero},
+    {PERISTEP_VR_STRAIN_ENERGY, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->strainEnergy(); }},
     {PERISTEP_VR_FRACTURE_ENERGY, Needs::Solution,
      [](P, M m, std::span<double> out) { out[0] = m->fractureEnergy(); }},
     {PERISTEP_VR_TOUGHNESS_KIC, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->toughnessKIC(); }},
     {PERISTEP_VR_ERROR_L2, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->errorL2(); }},
+    {PERISTEP_VR_EXACT_MEAN_UX, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 0, out); }},
+    {PERISTEP_VR_EXACT_MEAN_UY, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 1, out); }},
+    {PERISTEP_VR_EXACT_STD_UX, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 2, out); }},
+    {PERISTEP_VR_EXACT_STD_UY, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 3, out); }},
+    {PERISTEP_VR_HAS_EXACT_MOMENTS, Needs::Model, nullptr,
+     [](P, M m, std::span<std::int32_t> out) { out[0] = m->hasExactMoments() ? 1 : 0; }},
+    {PERISTEP_VR_RETAINED_VARIANCE, Needs::Model,
+     [](P, M m, std::span<double> out) { out[0] = m->retainedVariance(); }},
+    {PERISTEP_VR_KINETIC_ENERGY, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->kineticEnergy(); }},
+    {PERISTEP_VR_EXTERNAL_WORK, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->externalWork(); }},
+    {PERISTEP_VR_FORCE_EVALUATIONS, Needs::Solution,
+     [](P, M m, std::span<double> out) { out[0] = m->forceEvaluations(); }},
 }};
 
 }  // namespace
@@ -87,9 +129,17 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.poissonRatio = v.scalar<double>(PERISTEP_VR_POISSON_RATIO);
   p.modulusContrast = v.scalar<double>(PERISTEP_VR_MODULUS_CONTRAST);
   p.crystalFraction = v.scalar<double>(PERISTEP_VR_CRYSTAL_FRACTION);
+  p.pcaRealizations = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_PCA_REALIZATIONS));
+  p.covariance = covariance(v.scalar<std::int64_t>(PERISTEP_VR_COVARIANCE));
+  p.correlationLength = v.scalar<double>(PERISTEP_VR_CORRELATION_LENGTH);
+  p.fieldStd = v.scalar<double>(PERISTEP_VR_FIELD_STD);
+  p.transform = fieldTransform(v.scalar<std::int64_t>(PERISTEP_VR_FIELD_TRANSFORM));
   const auto xi = v.get<double>(PERISTEP_VR_XI);
   p.xi.assign(xi.begin(), xi.end());
   p.linearSolver = solverName(v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER));
+  p.timeIntegrator = integratorName(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
+  p.internalTimeStep = v.scalar<double>(PERISTEP_VR_INTERNAL_TIME_STEP);
+  p.integratorTolerance = v.scalar<double>(PERISTEP_VR_INTEGRATOR_TOLERANCE);
   return p;
 }
 

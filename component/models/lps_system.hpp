@@ -34,7 +34,8 @@ struct LpsSystem {
 
 // lambda, mu: per point (collar included); w: quadrature weights aligned with nb.
 // intact: bond state gamma per CSR entry (000:(3.17)), or null when nothing can break. With it, the
-// free-surface terms of 000:(3.19)-(3.22) apply at every point that has a broken bond. Bonds to Void
+// corrected dilatation 000:(3.20)-(3.21) applies at every point that has a broken bond, and the
+// free-surface terms of 000:(3.19), (3.22) wherever no free surface ends inside the horizon. Bonds to Void
 // points add no entries; other broken bonds keep (zero) entries, so the sparsity pattern, and with it the
 // symbolic factorization, never changes while bonds break.
 LpsSystem assembleLps(const PointCloud& cloud, const Neighbours& nb, const std::vector<double>& w,

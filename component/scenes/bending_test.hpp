@@ -28,6 +28,7 @@ struct BendingSpec {
   double loadDepth = 0.75e-3;     // d [m]
   double loadRate = -2.5e14;      // f_max [N/(m^3 s)]
   double timeStep = 0.0035e-6, endTime = 350e-6;  // [s]
+  double poissonRatio = 0.25;     // Table 1
 };
 
 DynamicScene makeBendingTest(const BendingSpec& spec);

@@ -35,16 +35,31 @@ GlassCeramicSpecimen::GlassCeramicSpecimen(const GlassCeramicSpec& spec) : spec_
   disc_ = std::make_shared<const LpsDiscretization>(std::move(d));
   const PointCloud& c = disc_->cloud;
 
-  crystal_ = generateMicrostructure(c, spec.crystalFraction, spec.seed);
-  fraction_ = crystalFraction(c, crystal_);
+  std::vector<double> R = spec.crystalField;
+  if (R.empty()) {
+    crystal_ = generateMicrostructure(c, spec.crystalFraction, spec.seed);
+    R.assign(crystal_.begin(), crystal_.end());
+    fraction_ = crystalFraction(c, crystal_);
+  } else {
+    require(R.size() == c.size(), "crystal field has " + std::to_string(R.size()) + " values for " +
+                                      std::to_string(c.size()) + " points");
+    crystal_.clear();
+    fraction_ = 0;
+    for (double r : R) crystal_.push_back(r >= 0.5);
+    for (std::size_t p : c.domain) fraction_ += R[p] / static_cast<double>(c.domain.size());
+  }
   FractureMaterial mat;
-  const Lame glass = planeStrain(m.E1, m.nu), crystal = planeStrain(m.E2, m.nu);
-  for (std::size_t p = 0; p < c.size(); ++p) {  // 000 Sec. 5: E and G linear in R
-    const bool r = crystal_[p];
-    E_.push_back(r ? m.E2 : m.E1);
-    mat.lambda.push_back(r ? crystal.lambda : glass.lambda);
-    mat.mu.push_back(r ? crystal.mu : glass.mu);
-    mat.fractureEnergy.push_back(r ? m.G2 : m.G1);
+  for (std::size_t p = 0; p < c.size(); ++p) {  // 000:(5.5): E and G affine in R
+    const double E = m.E1 + R[p] * (m.E2 - m.E1), G = m.G1 + R[p] * (m.G2 - m.G1);
+    if (!(E > 0 && G > 0))
+      throw InvalidInput("crystal field R = " + std::to_string(R[p]) + " at (x, y) = (" + std::to_string(c.x[p]) +
+                         ", " + std::to_string(c.y[p]) + ") gives E = " + std::to_string(E) + " Pa, G = " +
+                         std::to_string(G) + " J/m^2: not positive (a coordinate too far in the tail)");
+    const Lame l = planeStrain(E, m.nu);
+    E_.push_back(E);
+    mat.lambda.push_back(l.lambda);
+    mat.mu.push_back(l.mu);
+    mat.fractureEnergy.push_back(G);
   }
   BondState bonds = makeBondState(c, disc_->neighbours, mat.lambda, mat.mu, mat.fractureEnergy);
   const double left = -0.5 * spec.grid.Lx;

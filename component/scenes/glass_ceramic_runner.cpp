@@ -1,24 +1,61 @@
-// The pre-cracked glass-ceramic plate (000 Sec. 5) opened by the displacement input U_D.
+// The pre-cracked glass-ceramic plate (000 Sec. 5) opened by the displacement input U_D; its material is
+// the microstructure of a seed or, with pcaRealizations > 0, the PCA field 000:(5.5) at the coordinates xi.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
 #include "fracture/bond_state.hpp"
+#include "random/pca_cache.hpp"
+#include "scenes/microstructure.hpp"
 #include "scenes/glass_ceramic.hpp"
 #include "scenes/scene_runner.hpp"
 
 namespace peristep {
 namespace {
 
-GlassCeramicSpec specimenSpec(const SceneParameters& p) {
+// PCA of the crystal indicator over the realizations of seeds 1..n on the specimen's cloud, computed
+// once per process for a grid, fraction, n and number of modes (the samples of a study share it).
+std::shared_ptr<const PcaModes> crystalPca(const SceneParameters& p) {
+  std::ostringstream key;
+  key << "glassCeramic " << p.grid.nx << 'x' << p.grid.ny << ' ' << p.grid.Lx << ' ' << p.grid.Ly << ' '
+      << p.grid.deltaOverH << " f=" << p.crystalFraction << " n=" << p.pcaRealizations << " k=" << p.xi.size();
+  return cachedPca(key.str(), [&] {
+    GridSpec grid = p.grid;
+    grid.collar = true;
+    PointCloud cloud = makeRectangle(grid);
+    cloud.freeSideEdges();  // the specimen's cloud, point for point
+    PcaSpec spec;
+    spec.values = cloud.size();
+    spec.realizations = p.pcaRealizations;
+    spec.modes = p.xi.size();
+    return streamedPca(spec, [&](std::size_t j, std::span<double> out) {
+      const std::vector<std::uint8_t> R = generateMicrostructure(cloud, p.crystalFraction, 1 + j);
+      std::copy(R.begin(), R.end(), out.begin());
+    });
+  });
+}
+
+GlassCeramicSpec specimenSpec(const SceneParameters& p, const PcaModes* pca) {
   GlassCeramicSpec s;
   s.grid = p.grid;
   s.crystalFraction = p.crystalFraction;
   s.seed = p.grid.seed;
   s.linearSolver = p.linearSolver;
   s.phases.nu = p.poissonRatio;
+  if (pca) {
+    // The truncated expansion 000:(5.5) is not confined to [0, 1]: with G2/G1 = 13 a point at R < -0.09
+    // would get a negative fracture energy. R is a crystal indicator (a local volume fraction), so it is
+    // clipped to [0, 1], which keeps E and G between the phases' values for every xi.
+    const Eigen::VectorXd R = pca->expand(p.xi);
+    for (double r : R) s.crystalField.push_back(std::clamp(r, 0.0, 1.0));
+  }
   return s;
 }
 
 class GlassCeramicRunner final : public Runner {
  public:
-  explicit GlassCeramicRunner(const SceneParameters& p) : specimen_(specimenSpec(p)) {}
+  explicit GlassCeramicRunner(const SceneParameters& p)
+      : pca_(p.pcaRealizations > 0 ? crystalPca(p) : nullptr), specimen_(specimenSpec(p, pca_.get())) {}
   const PointCloud& cloud() const override { return specimen_.solver().discretization().cloud; }
   void advance(const SceneInputs& in) override { specimen_.advance(in.loadDisplacement); }
   std::vector<double> ux() const override { return specimen_.ux(); }
@@ -35,8 +72,16 @@ class GlassCeramicRunner final : public Runner {
   double toughnessKIC() const override { return specimen_.toughnessKIC(); }
   std::vector<std::uint8_t> saveState() const override { return specimen_.saveState(); }
   void restoreState(std::span<const std::uint8_t> b) override { specimen_.restoreState(b); }
+  std::vector<double> xiScales() const override {  // xi_k = sqrt(lambda_k) eta_k (random/microstructure_pca.hpp)
+    std::vector<double> s;
+    if (pca_)
+      for (Eigen::Index k = 0; k < pca_->variances.size(); ++k) s.push_back(std::sqrt(pca_->variances[k]));
+    return s;
+  }
+  double retainedVariance() const override { return pca_ ? pca_->retainedFraction() : 1.0; }
 
  private:
+  std::shared_ptr<const PcaModes> pca_;
   GlassCeramicSpecimen specimen_;
 };
 

@@ -1,44 +1,69 @@
 #include "scenes/scene_model.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
 #include "models/lps_material.hpp"
+#include "scenes/exact_moments.hpp"
 #include "scenes/scene_runner.hpp"
 #include "solvers/linear_solver.hpp"
 
 namespace peristep {
 
-std::size_t sceneModes(SceneId scene) {
-  switch (scene) {
+std::size_t randomCoordinates(const SceneParameters& p) {
+  switch (p.scene) {
     case SceneId::Smooth: return 1;
     case SceneId::Composite:
     case SceneId::InterfaceCrack: return 2;
-    case SceneId::GlassCeramic: return 0;
+    case SceneId::GlassCeramic: return p.pcaRealizations > 0 ? p.xi.size() : 0;
+    case SceneId::KlPlate: return p.xi.size();
+    case SceneId::PlexiglassCrack:
+    case SceneId::BendingOneNotch:
+    case SceneId::BendingTwoNotches: return 0;
   }
   return 0;
 }
 
-XiDistribution xiDistribution(SceneId scene, std::size_t k) {
-  return scene == SceneId::InterfaceCrack && k == 1 ? XiDistribution::Uniform : XiDistribution::Normal;
+bool isDynamic(SceneId scene) {
+  return scene == SceneId::PlexiglassCrack || scene == SceneId::BendingOneNotch ||
+         scene == SceneId::BendingTwoNotches;
+}
+
+XiDistribution xiDistribution(const SceneParameters& p, std::size_t k) {
+  if (k >= randomCoordinates(p)) return XiDistribution::Unused;
+  return p.scene == SceneId::InterfaceCrack && k == 1 ? XiDistribution::Uniform : XiDistribution::Normal;
 }
 
 double xiScale(SceneId scene, std::size_t) { return scene == SceneId::Smooth ? 0.1 : 1.0; }
 
 void validate(const SceneParameters& p) {
   require(p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack ||
-              p.scene == SceneId::GlassCeramic,
+              p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || isDynamic(p.scene),
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
-  validate(p.grid);
+  if (isDynamic(p.scene))
+    validateDynamicScene(p);  // cell-centred lattices: h = Lx/nx, not Lx/(nx-1)
+  else
+    validate(p.grid);
   validateElastic(1.0, p.poissonRatio);
   require(std::isfinite(p.modulusContrast) && p.modulusContrast > 0,
           "modulusContrast must be positive and finite (got " + std::to_string(p.modulusContrast) + ")");
   require(std::isfinite(p.crystalFraction) && p.crystalFraction >= 0 && p.crystalFraction <= 1,
           "crystalFraction must lie in [0, 1] (got " + std::to_string(p.crystalFraction) + ")");
-  const std::size_t needed = sceneModes(p.scene);
+  const std::size_t needed = randomCoordinates(p);
   require(p.xi.size() >= needed, "scene needs " + std::to_string(needed) + " random coordinates but nModes = " +
                                      std::to_string(p.xi.size()));
+  if (p.scene == SceneId::KlPlate) {
+    require(std::isfinite(p.correlationLength) && p.correlationLength > 0,
+            "correlationLength must be positive and finite (got " + std::to_string(p.correlationLength) + ")");
+    require(std::isfinite(p.fieldStd) && p.fieldStd > 0,
+            "fieldStd must be positive and finite (got " + std::to_string(p.fieldStd) + ")");
+  }
+  if (p.scene == SceneId::GlassCeramic && p.pcaRealizations > 0)
+    require(p.pcaRealizations > p.xi.size(), "the PCA field needs more realizations (pcaRealizations = " +
+                                                 std::to_string(p.pcaRealizations) + ") than modes (nModes = " +
+                                                 std::to_string(p.xi.size()) + ")");
   for (std::size_t k = 0; k < p.xi.size(); ++k)
     require(std::isfinite(p.xi[k]), "xi[" + std::to_string(k) + "] is not finite");
   if (p.scene == SceneId::InterfaceCrack)
@@ -47,9 +72,17 @@ void validate(const SceneParameters& p) {
 }
 
 struct SceneModel::Impl {
+  SceneParameters parameters;
   std::unique_ptr<Runner> runner;
   std::vector<double> x, y, ux, uy, damage, E;
   double load = 0;
+  // Exact moments for load 1, computed on the first request (they cost many evaluations of u0).
+  mutable std::optional<std::optional<ExactMoments>> moments;
+
+  const std::optional<ExactMoments>& exactMoments() const {
+    if (!moments) moments = peristep::exactMoments(parameters, runner->cloud());
+    return *moments;
+  }
 
   void refresh() {
     ux = runner->ux();
@@ -67,6 +100,10 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
     case SceneId::Composite: return makeElasticRunner(p);
     case SceneId::InterfaceCrack: return makeInterfaceCrackRunner(p);
     case SceneId::GlassCeramic: return makeGlassCeramicRunner(p);
+    case SceneId::KlPlate: return makeKlPlateRunner(p);
+    case SceneId::PlexiglassCrack:
+    case SceneId::BendingOneNotch:
+    case SceneId::BendingTwoNotches: return makeDynamicRunner(p);
   }
   throw InvalidInput("unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
 }
@@ -76,6 +113,7 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
 SceneModel::SceneModel(const SceneParameters& p) : impl_(std::make_unique<Impl>()) {
   validate(p);
   Impl& m = *impl_;
+  m.parameters = p;
   m.runner = makeRunner(p);
   const PointCloud& cloud = m.runner->cloud();
   for (std::size_t q : cloud.domain) {
@@ -106,11 +144,37 @@ const std::vector<double>& SceneModel::damage() const { return impl_->damage; }
 const std::vector<double>& SceneModel::youngsModulus() const { return impl_->E; }
 double SceneModel::loadFactor() const { return impl_->load; }
 double SceneModel::errorL2() const { return impl_->runner->errorL2(); }
+bool SceneModel::hasExactMoments() const { return impl_->exactMoments().has_value(); }
+
+std::vector<double> SceneModel::exactMoment(int which) const {
+  const auto& m = impl_->exactMoments();
+  if (!m) return {};
+  const std::vector<double>* fields[] = {&m->meanUx, &m->meanUy, &m->stdUx, &m->stdUy};
+  // u0 is linear in the load factor: the mean scales with it, the standard deviation with its size.
+  const double scale = which < 2 ? impl_->load : std::abs(impl_->load);
+  std::vector<double> v = *fields[which];
+  for (double& e : v) e *= scale;
+  return v;
+}
+
+std::vector<double> SceneModel::xiScales() const {
+  std::vector<double> s = impl_->runner->xiScales();
+  if (s.empty())
+    for (std::size_t k = 0; k < impl_->parameters.xi.size(); ++k) s.push_back(xiScale(impl_->parameters.scene, k));
+  return s;
+}
+
+double SceneModel::retainedVariance() const { return impl_->runner->retainedVariance(); }
+
 double SceneModel::reactionForce() const { return impl_->runner->reactionForce(); }
 double SceneModel::crackLength() const { return impl_->runner->crackLength(); }
 double SceneModel::brokenBonds() const { return impl_->runner->brokenBonds(); }
 double SceneModel::fractureEnergy() const { return impl_->runner->fractureEnergy(); }
 double SceneModel::toughnessKIC() const { return impl_->runner->toughnessKIC(); }
+double SceneModel::strainEnergy() const { return impl_->runner->strainEnergy(); }
+double SceneModel::kineticEnergy() const { return impl_->runner->kineticEnergy(); }
+double SceneModel::externalWork() const { return impl_->runner->externalWork(); }
+double SceneModel::forceEvaluations() const { return impl_->runner->forceEvaluations(); }
 
 std::vector<std::uint8_t> SceneModel::saveState() const {
   ByteWriter w;

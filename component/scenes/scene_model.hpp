@@ -16,10 +16,18 @@ enum class SceneId : std::int64_t {
   Smooth = 1,          // 000 Sec. 4.1, Test 1: smooth manufactured solution, one random coordinate
   Composite = 2,       // 000 Sec. 4.2, Test 2: bimaterial composite, two random coordinates
   InterfaceCrack = 3,  // 000 Sec. 4.3, Test 3: crack on a bimaterial interface, two random coordinates
-  GlassCeramic = 4,    // 000 Sec. 5: pre-cracked glass-ceramic plate, microstructure from `seed`
+  GlassCeramic = 4,    // 000 Sec. 5: pre-cracked glass-ceramic plate, microstructure from `seed` or its PCA field
+  PlexiglassCrack = 5,    // 001 Sec. 6.1: dynamic crack in a pre-cracked Plexiglass square
+  BendingOneNotch = 6,    // 001 Sec. 6.2: dynamic three-point bending, one pre-crack
+  BendingTwoNotches = 7,  // 001 Sec. 6.2: the same with two pre-cracks
+  KlPlate = 8,         // plate whose Young's modulus is a Karhunen-Loeve random field (000 Sec. 2.2)
 };
 
-enum class XiDistribution : std::int32_t { Normal = 0, Uniform = 1 };
+// Law of a standardized coordinate; Unused: the scene ignores that entry of xi.
+enum class XiDistribution : std::int32_t { Normal = 0, Uniform = 1, Unused = 2 };
+
+enum class Covariance { Exponential, Gaussian };
+enum class FieldTransform { Affine, Exponential };
 
 struct SceneParameters {
   SceneId scene = SceneId::Smooth;
@@ -29,20 +37,45 @@ struct SceneParameters {
   std::vector<double> xi;           // standardized random coordinates (physical = xiScale * xi)
   std::string linearSolver = "umfpack";
   double crystalFraction = 0.2;     // GlassCeramic: target crystal area fraction f
+  // GlassCeramic: 0 = the microstructure realization of `seed`; n > 0 = the PCA field 000:(5.5) of n
+  // realizations with xi.size() modes.
+  std::size_t pcaRealizations = 0;
+  // KlPlate: E = E0 (1 + g) or E0 exp(g - s^2/2), g the KL expansion of a field with covariance
+  // s^2 k(r / l) (000 Sec. 2.2).
+  Covariance covariance = Covariance::Exponential;
+  double correlationLength = 0.5;   // l [m]
+  double fieldStd = 0.3;            // s
+  FieldTransform transform = FieldTransform::Affine;
+  // Dynamic scenes (5-7): the time integrator by name (solvers/time_integrator.hpp), the central
+  // difference step (0: the scene's step from 001) and the SUNDIALS relative tolerance.
+  std::string timeIntegrator = "central_difference";
+  double internalTimeStep = 0;      // [s]
+  double integratorTolerance = 1e-6;
 };
+
+// Scenes 5-7 integrate the equation of motion in time; the others are quasi-static.
+bool isDynamic(SceneId scene);
 
 // What drives a step: the manufactured scenes and Test 3 scale their boundary data by loadFactor; the
 // glass-ceramic plate is opened by loadDisplacement (top collar +U_D, bottom collar -U_D).
 struct SceneInputs {
   double loadFactor = 1.0;
   double loadDisplacement = 0.0;  // [m]
+  // Dynamic scenes integrate over [time, time + stepSize] with loadFactor scaling their loads from
+  // `time` on (stepSize 0: outputs at the current time, nothing integrated); the quasi-static scenes
+  // solve at the inputs and ignore the interval.
+  double time = 0.0;              // [s] communication point (FMU time)
+  double stepSize = 0.0;          // [s]
 };
 
 // Number of random coordinates the scene uses, and each one's law (for the host's sampling rules):
 // Test 1: xi ~ N(0, 0.1^2); Test 2: xi1, xi2 ~ N(0, 1); Test 3: xi1 ~ N(0, 1), xi2 ~ U[-1, 1] (000 Sec. 4);
-// the glass-ceramic plate has none (its microstructure comes from the seed).
-std::size_t sceneModes(SceneId scene);
-XiDistribution xiDistribution(SceneId scene, std::size_t k);
+// KL plate and PCA glass-ceramic: every entry of xi, standard normal; the glass-ceramic realization of a
+// seed: none.
+std::size_t randomCoordinates(const SceneParameters& p);
+XiDistribution xiDistribution(const SceneParameters& p, std::size_t k);
+// Physical coordinate over standardized one for the parametrized scenes (the PCA field's scales are
+// the square roots of its variances: SceneModel::xiScales).
 double xiScale(SceneId scene, std::size_t k);
 
 // Throws InvalidInput naming the offending parameter; does no work.
@@ -70,6 +103,14 @@ class SceneModel {
   double loadFactor() const;
   // L2 error against the exact local solution (Tests 1-3 have one; 0 otherwise).
   double errorL2() const;
+  // Mean and standard deviation of the exact local solution over the random coordinates at the current
+  // load (Tests 1-3; computed on the first request). Empty vectors when the scene has none.
+  bool hasExactMoments() const;
+  std::vector<double> exactMoment(int which) const;  // 0: mean ux, 1: mean uy, 2: std ux, 3: std uy
+  // physical = xiScales()[k] * xi[k]; one per entry of xi.
+  std::vector<double> xiScales() const;
+  // Fraction of the field's variance the retained modes carry (KL plate, PCA glass-ceramic; else 1).
+  double retainedVariance() const;
   // Fracture outputs (0 for scenes that cannot break): y-force of the top collar [N/m], crack length
   // grown by loading [m], broken material bonds (pre-crack included), fracture energy
   // G1 L1 + G2 L2 + Gi Li [J/m] and toughness K_IC [Pa m^0.5] (000:(5.2)-(5.3)).
@@ -78,6 +119,12 @@ class SceneModel {
   double brokenBonds() const;
   double fractureEnergy() const;
   double toughnessKIC() const;
+  // Dynamic scenes (0 otherwise), per unit thickness: elastic energy PD(u) 001:(11), kinetic energy,
+  // work of the loads since the start; and the force evaluations the integrator has spent.
+  double strainEnergy() const;
+  double kineticEnergy() const;
+  double externalWork() const;
+  double forceEvaluations() const;
 
   // Checkpoint of everything that changes after set-up (load, solution, bond state).
   std::vector<std::uint8_t> saveState() const;

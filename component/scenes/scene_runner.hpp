@@ -27,6 +27,15 @@ class Runner {
   virtual double brokenBonds() const { return 0.0; }
   virtual double fractureEnergy() const { return 0.0; }
   virtual double toughnessKIC() const { return 0.0; }
+  // Scales of the standardized coordinates when they come from the field itself (PCA); empty: the
+  // fixed parametrization xiScale(scene, k).
+  virtual std::vector<double> xiScales() const { return {}; }
+  virtual double retainedVariance() const { return 1.0; }
+  // Dynamic scenes: energies per unit thickness [J/m] and integrator work.
+  virtual double strainEnergy() const { return 0.0; }
+  virtual double kineticEnergy() const { return 0.0; }
+  virtual double externalWork() const { return 0.0; }
+  virtual double forceEvaluations() const { return 0.0; }
   virtual std::vector<std::uint8_t> saveState() const = 0;
   virtual void restoreState(std::span<const std::uint8_t> bytes) = 0;
 };
@@ -35,6 +44,10 @@ class Runner {
 std::unique_ptr<Runner> makeElasticRunner(const SceneParameters& p);         // Tests 1 and 2
 std::unique_ptr<Runner> makeInterfaceCrackRunner(const SceneParameters& p);  // Test 3
 std::unique_ptr<Runner> makeGlassCeramicRunner(const SceneParameters& p);    // 000 Sec. 5
+std::unique_ptr<Runner> makeKlPlateRunner(const SceneParameters& p);         // KL random modulus
+std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (scenes 5-7)
+// The dynamic scenes' own checks (cell-centred lattice, integrator options); throws InvalidInput.
+void validateDynamicScene(const SceneParameters& p);
 
 // Component `component` (0: x, 1: y) of an interleaved per-point vector, on the domain points.
 std::vector<double> onDomain(const PointCloud& c, const std::vector<double>& u, int component);

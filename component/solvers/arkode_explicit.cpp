@@ -50,13 +50,14 @@ class ArkodeExplicit final : public TimeIntegrator {
     t_ = reached;
   }
 
-  IntegratorStats stats() const override {
-    IntegratorStats s;
-    ERKStepGetNumSteps(mem_.get(), &s.steps);
-    ERKStepGetNumRhsEvals(mem_.get(), &s.rhsEvaluations);
-    ERKStepGetNumErrTestFails(mem_.get(), &s.errorTestFailures);
-    s.seconds = seconds_;
-    return s;
+  IntegratorStats stats() const override { return counters() + carried_; }
+
+  void setState(double t, const double* u, const double* v, double work) override {
+    sundials::restartState(problem_, t, u, v, work, y_.data());
+    const IntegratorStats before = counters();
+    check(ERKStepReInit(mem_.get(), &ArkodeExplicit::rhs, t, y_), "ERKStepReInit");
+    sundials::carryCounters(before, counters(), carried_);
+    t_ = t;
   }
 
  private:
@@ -73,6 +74,14 @@ class ArkodeExplicit final : public TimeIntegrator {
       return -1;
     }
   }
+  IntegratorStats counters() const {
+    IntegratorStats s;
+    ERKStepGetNumSteps(mem_.get(), &s.steps);
+    ERKStepGetNumRhsEvals(mem_.get(), &s.rhsEvaluations);
+    ERKStepGetNumErrTestFails(mem_.get(), &s.errorTestFailures);
+    s.seconds = seconds_;
+    return s;
+  }
   void check(int flag, const char* what) const {
     if (flag < 0) throw SolverFailure(std::string("arkode_erk: ") + what + " failed: " + message_);
   }
@@ -88,6 +97,7 @@ class ArkodeExplicit final : public TimeIntegrator {
   };
   std::unique_ptr<void, Free> mem_;
   double t_ = 0, seconds_ = 0;
+  IntegratorStats carried_;  // counts from before a ReInit
 };
 
 }  // namespace

@@ -45,10 +45,9 @@ void CentralDifference::step(double dt) {
   const double tNew = t_ + dt;
   // External work by the trapezoid rule on each displacement increment, consistent with the scheme:
   // the body force on free dofs (increment dt v^{k+1/2}), the reactions -V L on prescribed ones
-  // (increment dt times their velocity).
+  // (increment dt times their velocity, set by applyPrescribed).
   const double bMid = 0.5 * (problem_.bodyAmplitude(t_) + problem_.bodyAmplitude(tNew));
   const double* profile = problem_.bodyProfile().empty() ? nullptr : problem_.bodyProfile().data();
-  const double* vel = problem_.prescribedVelocity().data();
   double* u = u_.data();
   double* v = v_.data();
   double* a = a_.data();
@@ -70,12 +69,24 @@ void CentralDifference::step(double dt) {
     if (!fixed[d])
       v[d] += 0.5 * dt * a[d];
     else
-      work -= V[d] * 0.5 * (f0[d] + f1[d]) * vel[d] * dt;
+      work -= V[d] * 0.5 * (f0[d] + f1[d]) * v[d] * dt;  // v: the path's (scaled) velocity
   }
   work_ += work;
   f_.swap(fNext_);
   t_ = tNew;
   ++stats_.steps;
+  ++stats_.rhsEvaluations;
+}
+
+void CentralDifference::setState(double t, const double* u, const double* v, double work) {
+  require(std::isfinite(t) && std::isfinite(work), "central_difference: the state's time and work must be finite");
+  std::copy(u, u + u_.size(), u_.begin());
+  std::copy(v, v + v_.size(), v_.begin());
+  t_ = t;
+  work_ = work;
+  // Recomputing the acceleration from u gives the same bits the uninterrupted run holds at t.
+  problem_.applyPrescribed(t_, u_.data(), v_.data());
+  problem_.acceleration(t_, u_.data(), f_.data(), a_.data());
   ++stats_.rhsEvaluations;
 }
 

@@ -23,6 +23,7 @@ class CentralDifference final : public TimeIntegrator {
   const double* velocity() const override { return v_.data(); }
   double externalWork() const override { return work_; }
   IntegratorStats stats() const override { return stats_; }
+  void setState(double t, const double* u, const double* v, double work) override;
 
   const StabilityEstimate& stability() const { return stability_; }
   double internalStep() const { return dt_; }  // the step actually taken (after any substepping)

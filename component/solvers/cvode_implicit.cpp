@@ -65,7 +65,18 @@ class CvodeImplicit final : public TimeIntegrator {
     t_ = reached;
   }
 
-  IntegratorStats stats() const override {
+  IntegratorStats stats() const override { return counters() + carried_; }
+
+  void setState(double t, const double* u, const double* v, double work) override {
+    sundials::restartState(problem_, t, u, v, work, y_.data());
+    const IntegratorStats before = counters();
+    check(CVodeReInit(mem_.get(), t, y_), "CVodeReInit");
+    sundials::carryCounters(before, counters(), carried_);
+    t_ = t;
+  }
+
+ private:
+  IntegratorStats counters() const {
     IntegratorStats s;
     void* m = mem_.get();
     CVodeGetNumSteps(m, &s.steps);
@@ -78,8 +89,6 @@ class CvodeImplicit final : public TimeIntegrator {
     s.seconds = seconds_;
     return s;
   }
-
- private:
   template <class Body>
   static int guarded(void* data, Body&& body) {
     auto* self = static_cast<CvodeImplicit*>(data);
@@ -144,6 +153,7 @@ class CvodeImplicit final : public TimeIntegrator {
   std::unique_ptr<_generic_SUNLinearSolver, FreeLs> ls_;
   std::unique_ptr<void, FreeMem> mem_;
   double t_ = 0, seconds_ = 0;
+  IntegratorStats carried_;  // counts from before a ReInit
 };
 
 }  // namespace

@@ -14,6 +14,7 @@ DynamicProblem::DynamicProblem(ForceModel& model, double density) : model_(model
   velocity_.assign(dofs(), 0.0);
   u0_.assign(dofs(), 0.0);
   v0_.assign(dofs(), 0.0);
+  pathStart_ = u0_;
 }
 
 void DynamicProblem::prescribeVelocity(const std::vector<std::uint32_t>& dofs, double velocity) {
@@ -42,6 +43,30 @@ void DynamicProblem::setInitialState(std::vector<double> u0, std::vector<double>
   }
   u0_ = std::move(u0);
   v0_ = std::move(v0);
+  pathStart_ = u0_;
+}
+
+void DynamicProblem::rescaleLoads(double scale, double t, const double* u) {
+  require(std::isfinite(scale) && std::isfinite(t), "dynamic problem: load scale and time must be finite");
+  for (const std::uint32_t d : prescribedList_) pathStart_[d] = u[d];
+  scale_ = scale;
+  since_ = t;
+}
+
+DynamicProblem::LoadPath DynamicProblem::loadPath() const {
+  LoadPath p{scale_, since_, {}};
+  p.start.reserve(prescribedList_.size());
+  for (const std::uint32_t d : prescribedList_) p.start.push_back(pathStart_[d]);
+  return p;
+}
+
+void DynamicProblem::setLoadPath(const LoadPath& p) {
+  require(p.start.size() == prescribedList_.size(), "dynamic problem: the load path needs one start value per "
+                                                    "prescribed dof");
+  require(std::isfinite(p.scale) && std::isfinite(p.since), "dynamic problem: load scale and time must be finite");
+  for (std::size_t k = 0; k < prescribedList_.size(); ++k) pathStart_[prescribedList_[k]] = p.start[k];
+  scale_ = p.scale;
+  since_ = p.since;
 }
 
 void DynamicProblem::acceleration(double t, const double* u, double* f, double* a) {
@@ -61,8 +86,8 @@ void DynamicProblem::accelerationDerivative(const double* u, const double* du, d
 
 void DynamicProblem::applyPrescribed(double t, double* u, double* v) const {
   for (const std::uint32_t d : prescribedList_) {
-    u[d] = u0_[d] + velocity_[d] * t;
-    v[d] = velocity_[d];
+    u[d] = pathStart_[d] + scale_ * velocity_[d] * (t - since_);
+    v[d] = scale_ * velocity_[d];
   }
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // The semi-discrete equation of motion rho u'' = L(u) + b(t) (001:(12), (30)) on a point cloud, with
 // prescribed-velocity boundary dofs and a separable body force. Shared by every time integrator.
+// The loads carry a scale s (1 unless rescaled): prescribed dofs move at s times their velocity and the
+// body force is s amplitude(t). A co-simulation input changes s between communication steps.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -20,6 +22,19 @@ class DynamicProblem {
   void setBodyForce(std::vector<double> profile, std::function<double(double)> amplitude);
   // Initial displacement and velocity (interleaved, 2 N each); prescribed dofs take their own velocity.
   void setInitialState(std::vector<double> u0, std::vector<double> v0);
+
+  // From time t on, the loads are scaled by `scale`: prescribed dofs continue from their values in u
+  // at t with scale times their velocity, the body force becomes scale amplitude(t).
+  void rescaleLoads(double scale, double t, const double* u);
+  // The prescribed path u_d(t) = start_d + scale velocity_d (t - since), exactly (for checkpoints);
+  // start holds one value per entry of prescribedDofs().
+  struct LoadPath {
+    double scale = 1, since = 0;
+    std::vector<double> start;
+  };
+  LoadPath loadPath() const;
+  void setLoadPath(const LoadPath& path);
+  double loadScale() const { return scale_; }
 
   ForceModel& model() { return model_; }
   // Loops over dofs use threads only above this size (below, a parallel region costs more than it saves).
@@ -42,7 +57,7 @@ class DynamicProblem {
   // P = sum_free V b . v + sum_prescribed (-V L) . v, with f = L(u).
   double externalPower(double t, const double* f, const double* v) const;
   double kineticEnergy(const double* v) const;
-  double bodyAmplitude(double t) const { return bodyProfile_.empty() ? 0.0 : amplitude_(t); }
+  double bodyAmplitude(double t) const { return bodyProfile_.empty() ? 0.0 : scale_ * amplitude_(t); }
   const std::vector<double>& bodyProfile() const { return bodyProfile_; }
 
  private:
@@ -54,6 +69,8 @@ class DynamicProblem {
   std::vector<double> bodyProfile_;
   std::function<double(double)> amplitude_;
   std::vector<double> u0_, v0_;
+  double scale_ = 1, since_ = 0;
+  std::vector<double> pathStart_;  // per dof; read on prescribed dofs only (u0_ until rescaled)
 };
 
 }  // namespace peristep

@@ -1,5 +1,6 @@
 #include "solvers/sundials_support.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace peristep::sundials {
@@ -11,6 +12,25 @@ void initialState(DynamicProblem& problem, double* y) {
     y[n + d] = problem.initialVelocity()[d];
   }
   y[2 * n] = 0.0;
+}
+
+void restartState(const DynamicProblem& problem, double t, const double* u, const double* v, double work, double* y) {
+  require(std::isfinite(t) && std::isfinite(work), "restart: the state's time and work must be finite");
+  const std::size_t n = problem.dofs();
+  std::copy(u, u + n, y);
+  std::copy(v, v + n, y + n);
+  problem.applyPrescribed(t, y, y + n);
+  y[2 * n] = work;
+}
+
+void carryCounters(const IntegratorStats& before, const IntegratorStats& after, IntegratorStats& carried) {
+  // Whether or not this SUNDIALS version zeroes a counter on ReInit, totals stay monotone.
+  carried.steps += before.steps - after.steps;
+  carried.rhsEvaluations += before.rhsEvaluations - after.rhsEvaluations;
+  carried.jacobianProducts += before.jacobianProducts - after.jacobianProducts;
+  carried.linearIterations += before.linearIterations - after.linearIterations;
+  carried.nonlinearIterations += before.nonlinearIterations - after.nonlinearIterations;
+  carried.errorTestFailures += before.errorTestFailures - after.errorTestFailures;
 }
 
 void absoluteTolerances(std::size_t n, double displacementTolerance, double velocityTolerance, double* tol) {

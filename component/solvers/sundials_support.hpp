@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "solvers/dynamic_problem.hpp"
+#include "solvers/time_integrator.hpp"
 
 namespace peristep::sundials {
 
@@ -48,6 +49,10 @@ inline void keepMessage(int, const char* module, const char* function, char* msg
 
 // Fill y with the problem's initial state, and the absolute tolerances (W uncontrolled).
 void initialState(DynamicProblem& problem, double* y);
+// Fill y with (u, v, work) at time t, the prescribed dofs on their path (a restart).
+void restartState(const DynamicProblem& problem, double t, const double* u, const double* v, double work, double* y);
+// Counters that a ReInit may reset: after - before is added to carried so that totals keep counting.
+void carryCounters(const IntegratorStats& before, const IntegratorStats& after, IntegratorStats& carried);
 void absoluteTolerances(std::size_t dofs, double displacementTolerance, double velocityTolerance, double* tol);
 // ydot = [v, a(t, u), P(t, u, v)]; f is scratch of 2N values. Returns false when the result is not finite.
 bool evaluateRhs(DynamicProblem& problem, double t, const double* y, double* ydot, double* f);

@@ -32,6 +32,18 @@ struct IntegratorStats {
   long linearIterations = 0, nonlinearIterations = 0, preconditionerSetups = 0, errorTestFailures = 0;
   double seconds = 0;                  // wall time spent in advanceTo
   long forceEquivalents() const { return rhsEvaluations + jacobianProducts; }
+  IntegratorStats& operator+=(const IntegratorStats& o) {
+    steps += o.steps;
+    rhsEvaluations += o.rhsEvaluations;
+    jacobianProducts += o.jacobianProducts;
+    linearIterations += o.linearIterations;
+    nonlinearIterations += o.nonlinearIterations;
+    preconditionerSetups += o.preconditionerSetups;
+    errorTestFailures += o.errorTestFailures;
+    seconds += o.seconds;
+    return *this;
+  }
+  friend IntegratorStats operator+(IntegratorStats a, const IntegratorStats& b) { return a += b; }
 };
 
 class TimeIntegrator {
@@ -47,6 +59,12 @@ class TimeIntegrator {
   // Work done on the body since t = 0 by the body force and by the reactions of the prescribed dofs.
   virtual double externalWork() const = 0;
   virtual IntegratorStats stats() const = 0;
+  // Continue from (u, v) at time t with `work` done so far (a checkpoint, or new loads after
+  // DynamicProblem::rescaleLoads); prescribed dofs take their path's values at t. The adaptive
+  // SUNDIALS integrators restart there with a fresh step-size history (and BDF at order 1), so their
+  // continuation agrees with an uninterrupted run to the tolerances, not bit for bit; central
+  // difference continues exactly. Statistics keep counting.
+  virtual void setState(double t, const double* u, const double* v, double work) = 0;
 };
 
 std::vector<std::string> timeIntegratorNames();

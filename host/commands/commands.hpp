@@ -1,7 +1,9 @@
 #pragma once
 // The subcommands of `peristep`. Each returns the process exit code and throws InputError or
 // RunError with a one-line message; main() prints it.
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace peristep::host {
 
@@ -23,8 +25,21 @@ struct ConvergenceOptions {
   bool verbose = false;
 };
 
+struct SampleOptions {
+  std::string scene;
+  std::string fmu;
+  std::string out;                     // HDF5 study file; CSV and sample directory beside it
+  std::string rule;                    // tensor | smolyak | mc
+  std::vector<std::uint64_t> levels;   // tensor: points per coordinate; smolyak: level
+  std::vector<std::uint64_t> samples;  // mc: sample counts
+  bool nested = false;
+  std::uint64_t seed = 1;
+  bool verbose = false;
+};
+
 int infoCommand(const InfoOptions& options);
 int runCommand(const RunOptions& options);
 int convergenceCommand(const ConvergenceOptions& options);
+int sampleCommand(const SampleOptions& options);
 
 }  // namespace peristep::host

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# The glass-ceramic toughness study of Fan et al. (seeds/000 Sec. 5, Fig. 8): for crystal fractions
+# f = 20, 40, 60, 80 %, mean and standard deviation of K_IC from
+#   PCA:  the PCA field of `REALIZATIONS` microstructures with 20 modes, Smolyak level 1 (41 samples);
+#   MC:   `MC` real microstructures (seeds 1..MC).
+# Everything goes through `peristep sample`, so an interrupted study resumes where it stopped.
+#
+#   bench/glass_ceramic_study.sh OUT_DIR [H_UM] [REALIZATIONS] [MC] [STEPS] [UD_MAX_M]
+#   e.g. bench/glass_ceramic_study.sh study 16 2000 100 75 0.3e-6
+#
+# Writes OUT_DIR/toughness.csv (f, method, samples, mean, std, wall s) and OUT_DIR/toughness.png.
+set -euo pipefail
+out=${1:?usage: glass_ceramic_study.sh OUT_DIR [H_UM] [REALIZATIONS] [MC] [STEPS] [UD_MAX_M]}
+h_um=${2:-16}
+realizations=${3:-20000}
+mc=${4:-100}
+steps=${5:-75}
+ud_max=${6:-0.3e-6}
+here=$(cd "$(dirname "$0")/.." && pwd)
+peristep=${PERISTEP:-$here/build/host/peristep}
+mkdir -p "$out"
+cd "$out"
+
+# Grid: 800 x 400 um at spacing h (nx - 1 = 800 / h, ny - 1 = 400 / h).
+nx=$(python3 -c "print(round(800 / $h_um) + 1)")
+ny=$(python3 -c "print(round(400 / $h_um) + 1)")
+zeros=$(python3 -c "print(', '.join(['0.0'] * 20))")
+
+scene() {  # scene FILE FRACTION PCA_REALIZATIONS NMODES XI
+  cat > "$1" <<TOML
+[parameters]
+scene = "glassCeramic"
+nx = $nx
+ny = $ny
+Lx = 800e-6
+Ly = 400e-6
+deltaOverH = 3.0
+poissonRatio = 0.25
+crystalFraction = $2
+seed = 1
+pcaRealizations = $3
+nModes = $4
+xi = [$5]
+
+[loading]
+input = "loadDisplacement"
+from = 0.0
+to = $ud_max
+steps = $steps
+TOML
+}
+
+# Column of a CSV header by name.
+colnum() { head -1 "$1" | tr ',' '\n' | grep -nx "$2" | cut -d: -f1; }
+
+echo "f,method,samples,mean_KIC,std_KIC,wall_s" > toughness.csv
+for f in 0.2 0.4 0.6 0.8; do
+  tag=$(python3 -c "print(round(100 * $f))")
+  scene "pca_f$tag.toml" "$f" "$realizations" 20 "$zeros"
+  scene "mc_f$tag.toml" "$f" 0 1 "0.0"
+  "$peristep" sample "pca_f$tag.toml" --rule smolyak --level 1 --out "pca_f$tag.h5"
+  "$peristep" sample "mc_f$tag.toml" --rule mc --samples "$mc" --out "mc_f$tag.h5"
+  for method in pca mc; do
+    csv="${method}_f$tag.csv"
+    row=$(tail -1 "$csv")
+    get() { echo "$row" | cut -d, -f"$(colnum "$csv" "$1")"; }
+    echo "$f,$method,$(get samples),$(get mean_toughnessKIC),$(get std_toughnessKIC),$(get seconds)" >> toughness.csv
+  done
+done
+column -t -s, toughness.csv
+
+if command -v gnuplot > /dev/null; then
+  gnuplot <<GP
+set terminal pngcairo size 900,600 noenhanced
+set output "toughness.png"
+set datafile separator ","
+set key top left
+set xlabel "crystal fraction f"
+set ylabel "K_IC [MPa m^0.5]"
+set title "Glass-ceramic toughness, h = $h_um um: mean +- one standard deviation"
+set xrange [0.1:0.9]
+plot "< grep ',pca,' toughness.csv" using (\$1-0.01):(\$4/1e6):(\$5/1e6) with yerrorlines title "PCA, Smolyak level 1 (41 samples)", \
+     "< grep ',mc,' toughness.csv" using (\$1+0.01):(\$4/1e6):(\$5/1e6) with yerrorlines title "Monte Carlo ($mc microstructures)"
+GP
+  echo "wrote $out/toughness.csv and $out/toughness.png"
+fi

@@ -1,0 +1,214 @@
+// The dynamic fracture scenes of 001 Sec. 6 behind the Runner face: each advance integrates one
+// communication interval with the scene's time integrator, as many internal steps as it needs.
+//
+// How the grid parameters map onto the scenes (cell-centred lattices, 001 Sec. 4: every node is the
+// centre of an h x h cell, so nx nodes span Lx with h = Lx/nx, unlike the vertex grids of scenes 1-4):
+//   h = Lx/nx = Ly/ny, horizon eps = deltaOverH h; jitter must be 0.
+//   5 Plexiglass crack (001 Sec. 6.1): D = [0, Lx]^2 (nx = ny), pre-crack Lx/5 from the bottom centre
+//     (0.02 m at Lx = 0.1 m), collars eps thick, so deltaOverH must be a whole number. The paper's runs:
+//     Lx = 0.1 m, eps = 8, 4, 2 mm, h = eps/2, eps/4, eps/8 (e.g. nx = 50, deltaOverH = 4: eps = 8 mm).
+//   6, 7 bending (001 Sec. 6.2): D = [0, Lx] x [0, Ly]; pre-cracks, supports and load band sit where
+//     bending_test.hpp puts them on the 0.25 x 0.05 m beam, scaled by Lx/0.25 in x and Ly/0.05 in y.
+// loadFactor scales the loads from each communication point on: the pull velocity of the Plexiglass
+// strips (1 m/s at loadFactor 1) and the bending body force f_max t. poissonRatio is nu of 001 Table 1
+// (0.25 in the paper); K = 25 GPa, G_c = 500 J/m^2, rho = 1200 kg/m^3.
+// The scene's clock starts at 0 with the run (t in the loads of 001 is the time since loading began,
+// whatever the importer's startTime) and advances by each communication step size.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/byte_stream.hpp"
+#include "core/errors.hpp"
+#include "models/state_based_material.hpp"
+#include "scenes/bending_test.hpp"
+#include "scenes/fracture_diagnostics.hpp"
+#include "scenes/plexiglass_crack.hpp"
+#include "scenes/scene_runner.hpp"
+#include "solvers/time_integrator.hpp"
+
+namespace peristep {
+namespace {
+
+constexpr double kBeamLength = 0.25, kBeamDepth = 0.05;  // the beam bending_test.hpp describes [m]
+
+std::string text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+double spacing(const SceneParameters& p) { return p.grid.Lx / static_cast<double>(p.grid.nx); }
+
+DynamicScene makeScene(const SceneParameters& p) {
+  const double h = spacing(p), eps = p.grid.deltaOverH * h;
+  if (p.scene == SceneId::PlexiglassCrack) {
+    PlexiglassCrackSpec s;
+    s.horizon = eps;
+    s.meshRatio = p.grid.deltaOverH;
+    s.side = p.grid.Lx;
+    s.crackLength = p.grid.Lx / 5;
+    s.poissonRatio = p.poissonRatio;
+    return makePlexiglassCrack(s);
+  }
+  BendingSpec s;
+  const double sx = p.grid.Lx / kBeamLength, sy = p.grid.Ly / kBeamDepth;
+  s.cracks = p.scene == SceneId::BendingOneNotch ? 1 : 2;
+  s.horizon = eps;
+  s.meshRatio = p.grid.deltaOverH;
+  s.length = p.grid.Lx;
+  s.depth = p.grid.Ly;
+  s.crackLength *= sy;
+  s.loadDepth *= sy;
+  s.crackOffset *= sx;
+  s.supportCentre *= sx;
+  s.supportHalfWidth *= sx;
+  s.loadHalfWidth *= sx;
+  s.poissonRatio = p.poissonRatio;
+  return makeBendingTest(s);
+}
+
+// The material nodes (D, collars excluded) as the cloud whose domain the outputs are written on;
+// lattice nodes are numbered row by row, so D's nodes in lattice order are an [ny][nx] image.
+PointCloud outputCloud(const DynamicScene& scene) {
+  PointCloud c = scene.cloud;
+  c.domain.clear();
+  for (std::size_t p = 0; p < c.size(); ++p)
+    if (scene.material[p]) c.domain.push_back(p);
+  return c;
+}
+
+std::vector<double> onMaterial(const PointCloud& c, const double* field, std::size_t stride, std::size_t offset) {
+  std::vector<double> v;
+  v.reserve(c.domain.size());
+  for (std::size_t p : c.domain) v.push_back(field[stride * p + offset]);
+  return v;
+}
+
+class DynamicRunner final : public Runner {
+ public:
+  explicit DynamicRunner(const SceneParameters& p)
+      : scene_(makeScene(p)), output_(outputCloud(scene_)), diagnostics_(scene_), nu_(p.poissonRatio) {
+    IntegratorOptions o;
+    o.timeStep = p.internalTimeStep > 0 ? p.internalTimeStep : scene_.timeStep;
+    o.relativeTolerance = p.integratorTolerance;
+    try {
+      integrator_ = makeTimeIntegrator(p.timeIntegrator, *scene_.problem, o);
+    } catch (const InvalidInput& e) {
+      if (p.timeIntegrator != "central_difference") throw;
+      // Central difference refuses a step above its stability limit: name the parameter behind it.
+      throw InvalidInput("internalTimeStep = " + text(o.timeStep) + " s (0: the scene's step) on this lattice (h = " +
+                         text(scene_.h()) + " m, horizon " + text(scene_.horizon()) + " m): " + e.what());
+    }
+    record_ = diagnostics_.measure(*integrator_);
+  }
+
+  const PointCloud& cloud() const override { return output_; }
+
+  void advance(const SceneInputs& in) override {
+    require(std::isfinite(in.stepSize) && in.stepSize >= 0,
+            "communication step size must be non-negative (got " + std::to_string(in.stepSize) + ")");
+    DynamicProblem& problem = *scene_.problem;
+    if (in.loadFactor != problem.loadScale()) {
+      // New loads from this communication point on; the state itself is unchanged.
+      const double t = integrator_->time();
+      const std::size_t n = problem.dofs();
+      const std::vector<double> u(integrator_->displacement(), integrator_->displacement() + n);
+      const std::vector<double> v(integrator_->velocity(), integrator_->velocity() + n);
+      problem.rescaleLoads(in.loadFactor, t, u.data());
+      integrator_->setState(t, u.data(), v.data(), integrator_->externalWork());
+    }
+    if (in.stepSize > 0) integrator_->advanceTo(integrator_->time() + in.stepSize);
+    record_ = diagnostics_.measure(*integrator_);
+  }
+
+  std::vector<double> ux() const override { return onMaterial(output_, integrator_->displacement(), 2, 0); }
+  std::vector<double> uy() const override { return onMaterial(output_, integrator_->displacement(), 2, 1); }
+  std::vector<double> youngsModulus() const override {
+    // The 3D relation 001 Table 1 is computed with: E = 3 K (1 - 2 nu).
+    return std::vector<double>(output_.domain.size(), 3.0 * StateBasedInput{}.bulkModulus * (1.0 - 2.0 * nu_));
+  }
+  // Z of 001:(104) (> 1 where the bond strain has passed the softening point).
+  std::vector<double> damage() const override { return onMaterial(output_, diagnostics_.damage().data(), 1, 0); }
+  double crackLength() const override { return record_.crackLength; }
+  double fractureEnergy() const override { return record_.fractureEnergy; }
+  double strainEnergy() const override { return record_.elastic; }
+  double kineticEnergy() const override { return record_.kinetic; }
+  double externalWork() const override { return record_.externalWork; }
+  double forceEvaluations() const override { return static_cast<double>(integrator_->stats().forceEquivalents()); }
+
+  // Everything the future depends on: time, u, v, the work so far and the load path (the model keeps
+  // no history: Z and the energies follow from u).
+  std::vector<std::uint8_t> saveState() const override {
+    const std::size_t n = scene_.problem->dofs();
+    const DynamicProblem::LoadPath path = scene_.problem->loadPath();
+    ByteWriter w;
+    w.put(integrator_->time());
+    w.put(integrator_->externalWork());
+    w.putArray(std::span<const double>(integrator_->displacement(), n));
+    w.putArray(std::span<const double>(integrator_->velocity(), n));
+    w.put(path.scale);
+    w.put(path.since);
+    w.putArray(path.start);
+    return w.take();
+  }
+
+  void restoreState(std::span<const std::uint8_t> bytes) override {
+    const std::size_t n = scene_.problem->dofs();
+    ByteReader r(bytes);
+    const double t = r.get<double>(), work = r.get<double>();
+    const std::vector<double> u = r.getArray<double>(n), v = r.getArray<double>(n);
+    DynamicProblem::LoadPath path;
+    path.scale = r.get<double>();
+    path.since = r.get<double>();
+    path.start = r.getArray<double>(scene_.problem->prescribedDofs().size());
+    r.expectEnd();
+    scene_.problem->setLoadPath(path);
+    integrator_->setState(t, u.data(), v.data(), work);
+    record_ = diagnostics_.measure(*integrator_);
+  }
+
+ private:
+  DynamicScene scene_;
+  PointCloud output_;
+  FractureDiagnostics diagnostics_;  // refers to scene_
+  double nu_;
+  std::unique_ptr<TimeIntegrator> integrator_;
+  EnergyRecord record_;
+};
+
+}  // namespace
+
+void validateDynamicScene(const SceneParameters& p) {
+  const GridSpec& g = p.grid;
+  require(g.nx >= 2 && g.ny >= 2, "dynamic scenes need nx, ny >= 2 (got nx = " + std::to_string(g.nx) +
+                                      ", ny = " + std::to_string(g.ny) + ")");
+  require(std::isfinite(g.Lx) && std::isfinite(g.Ly) && g.Lx > 0 && g.Ly > 0, "Lx and Ly must be positive and finite");
+  const double hx = g.Lx / static_cast<double>(g.nx), hy = g.Ly / static_cast<double>(g.ny);
+  require(std::abs(hx - hy) <= 1e-9 * hx, "the dynamic scenes use cell-centred lattices with h = Lx/nx = Ly/ny, but "
+                                          "Lx/nx = " + std::to_string(hx) + " m and Ly/ny = " + std::to_string(hy) +
+                                          " m");
+  require(static_cast<double>(g.nx) * static_cast<double>(g.ny) < 2e8, "grid too large");
+  require(std::isfinite(g.deltaOverH) && g.deltaOverH >= 1 && g.deltaOverH <= 20,
+          "deltaOverH must lie in [1, 20] (got " + std::to_string(g.deltaOverH) + ")");
+  require(g.jitter == 0, "the dynamic scenes need a lattice: jitter must be 0 (got " + std::to_string(g.jitter) + ")");
+  if (p.scene == SceneId::PlexiglassCrack) {
+    require(g.nx == g.ny, "the Plexiglass crack is a square: nx must equal ny (got nx = " + std::to_string(g.nx) +
+                              ", ny = " + std::to_string(g.ny) + ")");
+    require(std::abs(g.deltaOverH - std::round(g.deltaOverH)) < 1e-9,
+            "the Plexiglass collars are one horizon thick: deltaOverH must be a whole number (got " +
+                std::to_string(g.deltaOverH) + ")");
+  }
+  const std::vector<std::string> names = timeIntegratorNames();
+  require(std::find(names.begin(), names.end(), p.timeIntegrator) != names.end(),
+          "unknown time integrator '" + p.timeIntegrator + "'");
+  require(std::isfinite(p.internalTimeStep) && p.internalTimeStep >= 0,
+          "internalTimeStep must be >= 0 s (0: the scene's step), got " + std::to_string(p.internalTimeStep));
+  require(std::isfinite(p.integratorTolerance) && p.integratorTolerance > 0,
+          "integratorTolerance must be positive, got " + std::to_string(p.integratorTolerance));
+}
+
+std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p) { return std::make_unique<DynamicRunner>(p); }
+
+}  // namespace peristep

@@ -1,0 +1,28 @@
+#pragma once
+// Results of a sample study:
+//   HDF5  /grid/<x, y>                        point coordinates [ny][nx]
+//         /level_<L>/nodes [Q][N], weights [Q], seeds [Q] (Monte Carlo over microstructures)
+//         /level_<L>/samples/<output>         every Float64 output per sample, [Q] or [Q][ny][nx]
+//         /level_<L>/mean/<output>, std/<output>   000:(3.10)-(3.11)
+//         attributes: rule, level, samples, computed, reused, seconds, errorMean/errorStd (if known)
+//   CSV   one row per level: samples, errors, wall time, mean and std of every scalar output.
+// The HDF5 file is rewritten after every level under a temporary name and renamed, so it always holds
+// the finished levels.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sample_study.hpp"
+
+namespace peristep::host {
+
+struct StudyDescription {
+  std::string scene, rule;
+  std::vector<Attribute> attributes;  // provenance written on "/"
+};
+
+void writeStudyHdf5(const std::filesystem::path& file, const StudyDescription& study, const ResultLayout& layout,
+                    const std::vector<LevelResult>& levels);
+void writeStudyCsv(const std::filesystem::path& file, const ResultLayout& layout, const std::vector<LevelResult>& levels);
+
+}  // namespace peristep::host

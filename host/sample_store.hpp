@@ -1,0 +1,38 @@
+#pragma once
+// Finished samples of a study, one small file each in a directory beside the result file, named by a
+// hash of everything that defines the sample (FMU, parameters with this sample's coordinates, loading).
+// A file is written under a temporary name and renamed, so an interrupted study leaves only whole
+// samples; restarting the same command finds them and recomputes nothing. Samples shared by two
+// rules or levels (nested rules, the centre node) are computed once.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace peristep::host {
+
+// The outputs a sample keeps: Float64 scalars and fields after its last load increment.
+struct SampleRecord {
+  std::vector<double> scalars;
+  std::vector<std::vector<double>> fields;
+  double seconds = 0;  // wall time of the sample when it was computed
+};
+
+class SampleStore {
+ public:
+  explicit SampleStore(std::filesystem::path directory);  // created when missing; throws RunError
+
+  // Stable 64-bit FNV-1a of the text that defines a sample.
+  static std::uint64_t key(const std::string& definition);
+  // The record, or nothing when it is missing or does not match the expected shape (then recomputed).
+  std::optional<SampleRecord> load(std::uint64_t key, std::size_t scalars, const std::vector<std::uint64_t>& fieldSizes) const;
+  void save(std::uint64_t key, const SampleRecord& record) const;
+  const std::filesystem::path& directory() const { return dir_; }
+
+ private:
+  std::filesystem::path file(std::uint64_t key) const;
+  std::filesystem::path dir_;
+};
+
+}  // namespace peristep::host

@@ -1,0 +1,198 @@
+// `peristep sample`: collocation and Monte Carlo studies through the FMU, their errors against the exact
+// moments (000 Sec. 4), the study files, and a sample loop killed part-way and restarted.
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <thread>
+
+#include "host_test_support.hpp"
+
+using namespace host_test;
+using Catch::Matchers::Contains;
+
+namespace {
+
+struct LevelRow {
+  double level, samples, computed, errorMean, errorStd;
+};
+
+std::vector<LevelRow> readStudyCsv(const fs::path& file) {
+  std::istringstream in(readText(file));
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line.rfind("level,samples,computed,errorMean,errorStd,diffMean,diffStd,seconds", 0) == 0);
+  std::vector<LevelRow> rows;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::istringstream s(line);
+    for (std::string c; std::getline(s, c, ',');) cells.push_back(c);
+    REQUIRE(cells.size() >= 5);
+    const auto num = [](const std::string& c) { return c.empty() ? std::nan("") : std::stod(c); };
+    rows.push_back({num(cells[0]), num(cells[1]), num(cells[2]), num(cells[3]), num(cells[4])});
+  }
+  return rows;
+}
+
+// scenes/<name> with the `key = value` lines of `changes` replaced (every key must be in the file).
+std::string sceneText(const std::string& name, const std::vector<std::pair<std::string, std::string>>& changes) {
+  std::istringstream in(readText(fs::path(PERISTEP_SOURCE_DIR) / "scenes" / name));
+  std::string out;
+  std::size_t replaced = 0;
+  for (std::string line; std::getline(in, line);) {
+    for (const auto& [key, value] : changes)
+      if (line.rfind(key + " =", 0) == 0) line = key + " = " + value, ++replaced;
+    out += line + '\n';
+  }
+  REQUIRE(replaced == changes.size());
+  return out;
+}
+
+ProcessResult sample(const fs::path& dir, const std::vector<std::string>& args) {
+  std::vector<std::string> all{PERISTEP_HOST_BINARY, "sample"};
+  all.insert(all.end(), args.begin(), args.end());
+  all.insert(all.end(), {"--fmu", PERISTEP_FMU});
+  return runProcess(all, dir);
+}
+
+}  // namespace
+
+TEST_CASE("peristep sample: Test 1 collocation errors fall 10x from 1 to 4 points (h = 1/64)", "[host][sample]") {
+  for (const char* nu : {"0.3", "0.495"}) {
+    TempDir dir;
+    writeText(dir / "t1.toml", sceneText("smooth_sampling.toml", {{"poissonRatio", nu}}));
+    const ProcessResult r = sample(dir.path(), {"t1.toml", "--rule", "tensor", "--levels", "1,2,3,4", "--out", "t1.h5"});
+    INFO("nu = " << nu << "\nstdout:\n" << r.out << "\nstderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    const auto rows = readStudyCsv(dir / "t1.csv");
+    REQUIRE(rows.size() == 4);
+    for (std::size_t k = 0; k < 4; ++k) CHECK(rows[k].samples == static_cast<double>(k + 1));
+    CHECK(rows[0].errorMean / rows[3].errorMean >= 10.0);
+    CHECK(rows[0].errorStd / rows[3].errorStd >= 10.0);
+    // Falling with every point for the mean (to ~1e-4 at 4 points, above the ~2e-5 spatial error);
+    // the standard deviation improves from 2 to 4 points.
+    for (std::size_t k = 0; k + 1 < 4; ++k) CHECK(rows[k + 1].errorMean < rows[k].errorMean);
+    CHECK(rows[3].errorStd < rows[1].errorStd);
+    // The centre node is shared by the odd levels: computed once.
+    CHECK(rows[2].computed == 2);
+  }
+}
+
+TEST_CASE("peristep sample: Test 3 collocation is more accurate than Monte Carlo at equal sample counts",
+          "[host][sample]") {
+  TempDir dir;
+  writeText(dir / "t3.toml", sceneText("interface_crack_sampling.toml", {{"nx", "17"}, {"ny", "17"}}));
+  const ProcessResult pcm = sample(dir.path(), {"t3.toml", "--rule", "tensor", "--levels", "2,3", "--out", "pcm.h5"});
+  const ProcessResult mc = sample(dir.path(), {"t3.toml", "--rule", "mc", "--samples", "4,9", "--out", "mc.h5"});
+  INFO("collocation:\n" << pcm.out << pcm.err << "\nMonte Carlo:\n" << mc.out << mc.err);
+  REQUIRE(pcm.exitCode == 0);
+  REQUIRE(mc.exitCode == 0);
+  const auto a = readStudyCsv(dir / "pcm.csv"), b = readStudyCsv(dir / "mc.csv");
+  REQUIRE(a.size() == 2);
+  REQUIRE(b.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    CHECK(a[k].samples == b[k].samples);
+    CHECK(a[k].errorMean < b[k].errorMean);
+    CHECK(a[k].errorStd < b[k].errorStd);
+  }
+}
+
+TEST_CASE("peristep sample: a Smolyak level-1 grid in 2 coordinates has 5 nodes and weights summing to 1",
+          "[host][sample]") {
+  TempDir dir;
+  writeText(dir / "t2.toml", sceneText("composite_sampling.toml", {{"nx", "9"}, {"ny", "9"}}));
+  const ProcessResult r = sample(dir.path(), {"t2.toml", "--rule", "smolyak", "--level", "1", "--out", "s.h5"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exitCode == 0);
+  const hid_t f = openHdf5(dir / "s.h5");
+  REQUIRE(f >= 0);
+  const Dataset w = readDataset(f, "/level_1/weights"), nodes = readDataset(f, "/level_1/nodes");
+  const Dataset mean = readDataset(f, "/level_1/mean/ux"), samples = readDataset(f, "/level_1/samples/ux");
+  H5Fclose(f);
+  REQUIRE(w.values.size() == 5);
+  CHECK(std::accumulate(w.values.begin(), w.values.end(), 0.0) == Approx(1.0).margin(1e-14));
+  CHECK(nodes.shape == std::vector<hsize_t>{5, 2});
+  REQUIRE(samples.shape == std::vector<hsize_t>{5, 9, 9});
+  // The stored mean is the weighted sum of the stored samples (000:(3.10)).
+  for (std::size_t i = 0; i < 81; ++i) {
+    double m = 0;
+    for (std::size_t k = 0; k < 5; ++k) m += w.values[k] * samples.values[k * 81 + i];
+    CHECK(mean.values[i] == Approx(m).margin(1e-14));
+  }
+}
+
+TEST_CASE("peristep sample: a loop killed part-way recomputes no finished sample and gives the same statistics",
+          "[host][sample]") {
+  TempDir dir;
+  writeText(dir / "t1.toml", sceneText("smooth_sampling.toml", {{"nx", "17"}, {"ny", "17"}}));
+  const std::vector<std::string> args{PERISTEP_HOST_BINARY, "sample", "t1.toml", "--rule", "tensor", "--level", "16",
+                                      "--out", "study.h5", "--fmu", PERISTEP_FMU};
+  const auto finished = [&] {
+    std::size_t n = 0;
+    if (fs::exists(dir / "study.samples"))
+      for (const auto& e : fs::directory_iterator(dir / "study.samples")) n += e.path().extension() == ".bin";
+    return n;
+  };
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int devnull = open("/dev/null", O_WRONLY);
+    if (devnull < 0 || dup2(devnull, 1) < 0 || dup2(devnull, 2) < 0 || chdir(dir.path().c_str()) != 0) _exit(127);
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (finished() < 3 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const std::size_t done = finished();
+  INFO("samples finished before the kill: " << done);
+  REQUIRE(done >= 3);
+  REQUIRE(done < 16);  // killed part-way (16 samples take several seconds)
+
+  const ProcessResult resumed = runProcess(args, dir.path());
+  INFO(resumed.out << resumed.err);
+  REQUIRE(resumed.exitCode == 0);
+    const auto rows = readStudyCsv(dir / "study.csv");
+  REQUIRE(rows.size() == 1);
+  CHECK(rows[0].computed == static_cast<double>(16 - done));
+
+  TempDir fresh;
+  writeText(fresh / "t1.toml", readText(dir / "t1.toml"));
+  REQUIRE(runProcess(args, fresh.path()).exitCode == 0);
+  for (const std::string name : {"/level_16/mean/ux", "/level_16/std/uy", "/level_16/mean/errorL2"}) {
+    const hid_t a = openHdf5(dir / "study.h5"), b = openHdf5(fresh / "study.h5");
+    const Dataset x = readDataset(a, name), y = readDataset(b, name);
+    H5Fclose(a);
+    H5Fclose(b);
+    REQUIRE(!x.values.empty());
+    CHECK(x.values == y.values);
+  }
+}
+
+TEST_CASE("peristep sample: rules that do not fit the scene or the command line are input errors", "[host][sample]") {
+  TempDir dir;
+  writeText(dir / "t1.toml", sceneText("smooth_sampling.toml", {{"nx", "9"}, {"ny", "9"}}));
+  const ProcessResult unknown = sample(dir.path(), {"t1.toml", "--rule", "latin", "--level", "2"});
+  CHECK(unknown.exitCode == 2);
+  CHECK_THAT(unknown.err, Contains("unknown rule 'latin'"));
+  const ProcessResult mixed = sample(dir.path(), {"t1.toml", "--rule", "mc", "--level", "2", "--samples", "4"});
+  CHECK(mixed.exitCode == 2);
+  CHECK_THAT(mixed.err, Contains("--rule mc takes --samples"));
+  const ProcessResult missing = sample(dir.path(), {"t1.toml", "--rule", "smolyak"});
+  CHECK(missing.exitCode == 2);
+  CHECK_THAT(missing.err, Contains("needs --level"));
+
+  writeText(dir / "gc.toml", "[parameters]\nscene = \"glassCeramic\"\n");
+  const ProcessResult none = sample(dir.path(), {"gc.toml", "--rule", "tensor", "--level", "2"});
+  CHECK(none.exitCode == 2);
+  CHECK_THAT(none.err, Contains("no random coordinates"));
+}
