@@ -6,7 +6,8 @@
 # Everything goes through `peristep sample`, so an interrupted study resumes where it stopped.
 #
 #   bench/glass_ceramic_study.sh OUT_DIR [H_UM] [REALIZATIONS] [MC] [STEPS] [UD_MAX_M]
-#   e.g. bench/glass_ceramic_study.sh study 16 2000 100 75 0.3e-6
+#   e.g. bench/glass_ceramic_study.sh study 40 20000 100 250 1e-6   (the paper's loading: 4e-3 um steps to 1 um)
+#   PERISTEP=path/to/peristep PERISTEP_FMU=path/to/PeriStep.fmu to use other builds.
 #
 # Writes OUT_DIR/toughness.csv (f, method, samples, mean, std, wall s) and OUT_DIR/toughness.png.
 set -euo pipefail
@@ -18,6 +19,7 @@ steps=${5:-75}
 ud_max=${6:-0.3e-6}
 here=$(cd "$(dirname "$0")/.." && pwd)
 peristep=${PERISTEP:-$here/build/host/peristep}
+fmu=(); [ -n "${PERISTEP_FMU:-}" ] && fmu=(--fmu "$PERISTEP_FMU")  # a copy, so a rebuild cannot change it mid-study
 mkdir -p "$out"
 cd "$out"
 
@@ -58,8 +60,8 @@ for f in 0.2 0.4 0.6 0.8; do
   tag=$(python3 -c "print(round(100 * $f))")
   scene "pca_f$tag.toml" "$f" "$realizations" 20 "$zeros"
   scene "mc_f$tag.toml" "$f" 0 1 "0.0"
-  "$peristep" sample "pca_f$tag.toml" --rule smolyak --level 1 --out "pca_f$tag.h5"
-  "$peristep" sample "mc_f$tag.toml" --rule mc --samples "$mc" --out "mc_f$tag.h5"
+  "$peristep" sample "pca_f$tag.toml" --rule smolyak --level 1 --out "pca_f$tag.h5" "${fmu[@]}"
+  "$peristep" sample "mc_f$tag.toml" --rule mc --samples "$mc" --out "mc_f$tag.h5" "${fmu[@]}"
   for method in pca mc; do
     csv="${method}_f$tag.csv"
     row=$(tail -1 "$csv")

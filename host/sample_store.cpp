@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 
 #include "host_errors.hpp"
 
@@ -49,6 +50,16 @@ std::uint64_t SampleStore::key(const std::string& definition) {
     h *= 1099511628211ull;
   }
   return h;
+}
+
+std::string SampleStore::fileDigest(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw RunError("cannot read " + file.string());
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  char hex[20];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(key(bytes.str())));
+  return hex;
 }
 
 std::filesystem::path SampleStore::file(std::uint64_t key) const {

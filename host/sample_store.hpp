@@ -1,6 +1,7 @@
 #pragma once
 // Finished samples of a study, one small file each in a directory beside the result file, named by a
-// hash of everything that defines the sample (FMU, parameters with this sample's coordinates, loading).
+// hash of everything that defines the sample (the component binary, its instantiation token, parameters
+// with this sample's coordinates, loading).
 // A file is written under a temporary name and renamed, so an interrupted study leaves only whole
 // samples; restarting the same command finds them and recomputes nothing. Samples shared by two
 // rules or levels (nested rules, the centre node) are computed once.
@@ -25,6 +26,9 @@ class SampleStore {
 
   // Stable 64-bit FNV-1a of the text that defines a sample.
   static std::uint64_t key(const std::string& definition);
+  // FNV-1a of a file's bytes, in hex: part of every key, so that samples computed by another build of
+  // the component are not taken for this one's.
+  static std::string fileDigest(const std::filesystem::path& file);
   // The record, or nothing when it is missing or does not match the expected shape (then recomputed).
   std::optional<SampleRecord> load(std::uint64_t key, std::size_t scalars, const std::vector<std::uint64_t>& fieldSizes) const;
   void save(std::uint64_t key, const SampleRecord& record) const;

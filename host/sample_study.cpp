@@ -38,8 +38,8 @@ double l2Error(const std::vector<double>& ax, const std::vector<double>& ay, con
 }  // namespace
 
 SampleStudy::SampleStudy(const FmuLibrary& library, const ModelDescription& md, const Scene& scene,
-                         const FmuInstance::Options& options, const SampleStore& store)
-    : library_(library), md_(md), scene_(scene), options_(options), store_(store) {}
+                         const FmuInstance::Options& options, const SampleStore& store, std::string componentId)
+    : library_(library), md_(md), scene_(scene), options_(options), store_(store), componentId_(std::move(componentId)) {}
 
 void SampleStudy::describe(const Scene& scene) {
   pending_ = std::make_unique<Simulation>(library_, md_, scene, options_);
@@ -75,7 +75,7 @@ LevelResult SampleStudy::runLevel(const SamplingOptions& rule, const RandomSpace
   for (const SampleJob& job : r.plan.jobs) {
     std::string definition;
     const Scene scene = sceneForSample(scene_, md_, job, definition);
-    const std::uint64_t key = SampleStore::key(definition);
+    const std::uint64_t key = SampleStore::key(componentId_ + '|' + definition);
     if (!described_) {
       describe(scene);
       pendingDefinition_ = definition;

@@ -37,8 +37,9 @@ void compareWithLast(std::vector<LevelResult>& levels, const ResultLayout& layou
 
 class SampleStudy {
  public:
+  // componentId (e.g. SampleStore::fileDigest of the binary) enters every sample's key.
   SampleStudy(const FmuLibrary& library, const ModelDescription& md, const Scene& scene,
-              const FmuInstance::Options& options, const SampleStore& store);
+              const FmuInstance::Options& options, const SampleStore& store, std::string componentId);
 
   // Runs (or reloads) every sample of the level; `progress(done, total)` after each.
   LevelResult runLevel(const SamplingOptions& rule, const RandomSpace& space, std::uint64_t level,
@@ -58,6 +59,7 @@ class SampleStudy {
   const Scene& scene_;
   FmuInstance::Options options_;
   const SampleStore& store_;
+  std::string componentId_;
   std::unique_ptr<Simulation> pending_;  // set up by describe() and not yet stepped
   std::string pendingDefinition_;
   ResultLayout layout_;

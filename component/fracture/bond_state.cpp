@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <omp.h>
 
 #include "models/lps_material.hpp"
 
@@ -68,16 +69,29 @@ std::size_t breakCrossing(BondState& s, const PointCloud& c, const Neighbours& n
 
 std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, const Neighbours& nb,
                                             const std::vector<double>& u) {
-  std::vector<std::size_t> fresh;
-  for (std::size_t p = 0; p < c.size(); ++p)
-    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
-      const std::uint32_t q = nb.index[k];
-      if (q < p || !s.intact[k] || !std::isfinite(s.criticalStretch[k])) continue;
-      const double zx = c.x[q] - c.x[p], zy = c.y[q] - c.y[p];
-      const double r = std::hypot(zx, zy);
-      const double stretch = (std::hypot(zx + u[2 * q] - u[2 * p], zy + u[2 * q + 1] - u[2 * p + 1]) - r) / r;
-      if (stretch > s.criticalStretch[k]) fresh.push_back(k);
+  // Threads check contiguous point ranges and the lists are joined in thread order: the result (and the
+  // breaking order recorded from it) is the same for any number of threads.
+  std::vector<std::vector<std::size_t>> found;
+#pragma omp parallel
+  {
+#pragma omp single
+    found.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    std::vector<std::size_t>& mine = found[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t ps = 0; ps < static_cast<std::ptrdiff_t>(c.size()); ++ps) {
+      const auto p = static_cast<std::size_t>(ps);
+      for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
+        const std::uint32_t q = nb.index[k];
+        if (q < p || !s.intact[k] || !std::isfinite(s.criticalStretch[k])) continue;
+        const double zx = c.x[q] - c.x[p], zy = c.y[q] - c.y[p];
+        const double r = std::hypot(zx, zy);
+        const double stretch = (std::hypot(zx + u[2 * q] - u[2 * p], zy + u[2 * q + 1] - u[2 * p + 1]) - r) / r;
+        if (stretch > s.criticalStretch[k]) mine.push_back(k);
+      }
     }
+  }
+  std::vector<std::size_t> fresh;
+  for (const auto& f : found) fresh.insert(fresh.end(), f.begin(), f.end());
   for (std::size_t k : fresh) s.intact[k] = s.intact[s.reverse[k]] = 0;  // 000:(2.24): never heal
   return fresh;
 }

@@ -26,9 +26,13 @@ struct PhaseConstants {
   double E1, E2, G1, G2, nu;  // glass (1) and crystal (2), 000 Table 1
 };
 
-// 000:(5.2): G_IC = (G1 L1 + G2 L2 + G_i L_i)/W with G_i = (G1+G2)/2;
+// Numerator of 000:(5.2): every broken bond contributes its fracture energy, the arithmetic mean of its
+// ends' G (000:(2.26)), times the crack length one bond stands for. For a two-phase field this is exactly
+// G1 L1 + G2 L2 + G_i L_i with G_i = (G1 + G2)/2; it extends (5.2) to a continuous field such as the PCA
+// expansion 000:(5.5), where the phase shares alone would miss the G of intermediate points.
+double crackEnergy(const PointCloud& cloud, const Neighbours& nb, const std::vector<std::size_t>& bonds,
+                   const std::vector<double>& G);
 // 000:(5.3): K_IC = sqrt(G_IC E_eff/(1-nu^2)), E_eff = (1-f) E1 + f E2.
-double energyReleaseRate(const CrackShares& L, double projectedLength, const PhaseConstants& m);
 double toughnessKIC(double GIC, double crystalFraction, const PhaseConstants& m);
 
 }  // namespace peristep

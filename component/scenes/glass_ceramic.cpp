@@ -57,6 +57,7 @@ GlassCeramicSpecimen::GlassCeramicSpecimen(const GlassCeramicSpec& spec) : spec_
                          std::to_string(G) + " J/m^2: not positive (a coordinate too far in the tail)");
     const Lame l = planeStrain(E, m.nu);
     E_.push_back(E);
+    G_.push_back(G);
     mat.lambda.push_back(l.lambda);
     mat.mu.push_back(l.mu);
     mat.fractureEnergy.push_back(G);
@@ -160,7 +161,8 @@ double GlassCeramicSpecimen::projectedCrackLength() const {
 }
 
 double GlassCeramicSpecimen::energyReleaseRate() const {
-  return peristep::energyReleaseRate(crackShares(), projectedCrackLength(), spec_.phases);
+  const double W = projectedCrackLength();
+  return W > 0 ? crackEnergy(disc_->cloud, disc_->neighbours, mainCrackBonds(), G_) / W : 0.0;
 }
 
 double GlassCeramicSpecimen::toughnessKIC() const {

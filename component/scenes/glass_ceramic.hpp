@@ -47,7 +47,7 @@ class GlassCeramicSpecimen {
   CrackShares crackShares() const;
   // Projected crack length W along x, from the pre-crack tip to the farthest bond of the main crack.
   double projectedCrackLength() const;
-  double energyReleaseRate() const;  // 000:(5.2)
+  double energyReleaseRate() const;  // 000:(5.2), fracture energy per bond (fracture/toughness.hpp)
   double toughnessKIC() const;       // 000:(5.3)
   bool crackReachedRightEdge() const;
 
@@ -60,7 +60,7 @@ class GlassCeramicSpecimen {
   GlassCeramicSpec spec_;
   std::shared_ptr<const LpsDiscretization> disc_;
   std::vector<std::uint8_t> crystal_, topCollar_;
-  std::vector<double> E_;
+  std::vector<double> E_, G_;
   double fraction_ = 0, tipX_ = 0;
   std::unique_ptr<QuasiStaticFracture> fracture_;
 };

@@ -49,7 +49,7 @@ GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b
     std::size_t j = 0;
     for (; j < m && result.iterations < maxIterations; ++j) {
       ++result.iterations;
-      M.solve(V[j], Z[j]);  // right preconditioning: z_j = M^{-1} v_j
+      M.precondition(V[j], Z[j]);  // right preconditioning: z_j = M^{-1} v_j
       A.multiply(Z[j], w);
       for (std::size_t i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         double h = 0;

@@ -20,6 +20,9 @@ class LinearSolver {
   virtual void factorize(const CsrMatrix& A) = 0;
   // x = A^{-1} b; throws SolverFailure when it cannot deliver a finite solution.
   virtual void solve(std::span<const double> b, std::span<double> x) = 0;
+  // x ~ A^{-1} b as a preconditioner inside a Krylov method: may skip what only polishes the answer
+  // (UMFPACK's iterative refinement, which costs three times the triangular solves themselves).
+  virtual void precondition(std::span<const double> b, std::span<double> x) { solve(b, x); }
 };
 
 // "umfpack" (UMFPACK, 64-bit indices, METIS nested-dissection ordering: the fastest here, see

@@ -22,6 +22,8 @@ struct LoadStepReport {
   int factorizations = 0;      // numeric factorizations among them
   int krylovIterations = 0;    // GMRES iterations preconditioned by an older factorization
   std::size_t newlyBroken = 0; // pairs broken at this load
+  // Wall time of the phases (profiling only: no decision depends on them, so runs stay reproducible).
+  double assemblySeconds = 0, factorizationSeconds = 0, solveSeconds = 0, bondCheckSeconds = 0;
 };
 
 class QuasiStaticFracture {
@@ -43,12 +45,17 @@ class QuasiStaticFracture {
   // Net force the points of `collar` exert on the domain (per unit thickness).
   std::array<double, 2> collarForce(const std::vector<std::uint8_t>& collar) const;
 
-  // Checkpoint of what changes while loading: load, displacement, bond state, broken list.
+  // Checkpoint of what changes while loading: load, displacement, bond state, broken list, and which
+  // matrix the factorization in use belongs to (restoring refactorizes that one, so that the
+  // preconditioned solves, and with them the run, repeat bit for bit).
   std::vector<std::uint8_t> saveState() const;
   void restoreState(std::span<const std::uint8_t> bytes);
 
  private:
-  void assemble();
+  LpsSystem assembleFor(const std::vector<std::uint8_t>& intact, std::vector<std::uint8_t>& stabilized) const;
+  void assemble(LoadStepReport* report);
+  void factorizeCurrent(LoadStepReport& report);
+  void rebuildFactorization(LoadStepReport& report);
   void solveCurrent(LoadStepReport& report);
 
   std::shared_ptr<const LpsDiscretization> disc_;
@@ -57,10 +64,18 @@ class QuasiStaticFracture {
   std::vector<double> unitCollar_;
   std::unique_ptr<LinearSolver> solver_;
   LpsSystem system_;
-  bool factorizationCurrent_ = false, analyzed_ = false;
+  std::vector<std::uint8_t> stabilized_;  // points held by the springs (they have a broken bond)
+  // The matrix the solver factorized (kept alive for it) and the state it belongs to: the bonds intact
+  // now plus brokenByLoading_[factoredBroken_..] (bonds only break, in that recorded order).
+  CsrMatrix factoredA_;
+  std::size_t factoredBroken_ = 0;
+  bool hasFactorization_ = false;  // a factorization of the state above exists (in solver_)
+  bool factorizationLive_ = false; // ... and solver_ holds it (false after a restore until rebuilt)
+  bool matrixFactored_ = false;    // system_.A is the factored matrix (no bond broken since)
+  int staleIterations_ = 0;        // GMRES iterations spent on the factorization since it was computed
   int lastKrylovIterations_ = 0;
-  std::vector<double> u_, x_;  // u of all points; last unknown vector (warm start)
-  std::vector<std::uint8_t> stabilized_;
+  int factorizationCost_ = 0;      // one factorization priced in GMRES iterations (see the .cpp)
+  std::vector<double> u_, x_;      // u of all points; last unknown vector (warm start)
   std::vector<std::size_t> brokenByLoading_;
   double load_ = 0;
 };

@@ -87,7 +87,8 @@ int sampleCommand(const SampleOptions& options) {
   const std::filesystem::path csv = std::filesystem::path(out).replace_extension(".csv");
   const SampleStore store(std::filesystem::path(out).replace_extension(".samples"));
 
-  const FmuLibrary library(fmu.archive.binaryFile(fmu.md.coSimulationIdentifier));
+  const std::filesystem::path binary = fmu.archive.binaryFile(fmu.md.coSimulationIdentifier);
+  const FmuLibrary library(binary);
   FmuInstance::Options instanceOptions;
   instanceOptions.resourcePath = fmu.archive.resourcePath();
   instanceOptions.verbose = options.verbose;
@@ -95,7 +96,7 @@ int sampleCommand(const SampleOptions& options) {
   std::cout << "# " << options.scene << ": random coordinates " << lawText(space) << "; rule " << options.rule
             << (rule.rule == SampleRule::Smolyak ? (options.nested ? " (nested)" : " (Gauss)") : "") << '\n';
 
-  SampleStudy study(library, fmu.md, scene, instanceOptions, store);
+  SampleStudy study(library, fmu.md, scene, instanceOptions, store, SampleStore::fileDigest(binary));
   StudyDescription description{options.scene, options.rule,
                                {{"nested", std::vector<std::int64_t>{options.nested}},
                                 {"seed", std::vector<std::uint64_t>{options.seed}},
