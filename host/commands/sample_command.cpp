@@ -61,6 +61,15 @@ void printLevels(const std::vector<LevelResult>& levels, const ResultLayout& lay
     rows.push_back(row);
   }
   printTable(std::cout, header, rows);
+  // Sparse-grid weights can be negative (level 1 in 20 dimensions: -5.67 on the centre node): for an output
+  // that is not smooth in xi the variance estimate can come out negative. Say so instead of hiding it.
+  for (const LevelResult& r : levels) {
+    std::size_t clamped = r.scalarMoments.clamped;
+    for (const Moments& m : r.fieldMoments) clamped += m.clamped;
+    if (clamped > 0)
+      std::cout << "level " << r.level << ": the variance estimate of " << clamped
+                << " output value(s) was negative (negative quadrature weights) and is reported as std = 0\n";
+  }
 }
 
 }  // namespace
