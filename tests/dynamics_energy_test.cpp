@@ -28,7 +28,7 @@ std::vector<double> smoothField(const PointCloud& c, double a) {
 TEST_CASE("central difference conserves energy without fracture: 1e4 steps within 1e-4", "[dynamics]") {
   const double nu = GENERATE(0.25, 0.22);  // without and with the hydrostatic force
   const double h = 1e-3, eps = 3e-3;
-  const PointCloud c = lattice(16, 16, h, 3.0);
+  const PointCloud c = lattice(16, 16, h);
   StateBasedModel m = model(c, plexiglass(nu, eps), eps);
   DynamicProblem problem(m, m.material().density);
   problem.setInitialState(smoothField(c, 1e-7), std::vector<double>(2 * c.size(), 0.0));
@@ -57,7 +57,7 @@ TEST_CASE("linear momentum is conserved where no boundary acts", "[dynamics]") {
   // Softening bonds, hydrostatic force, non-uniform omega and stiffness, a pre-crack: all pairwise
   // antisymmetric, so the total momentum of a free plate cannot change.
   const double h = 1e-3, eps = 3e-3;
-  const PointCloud c = lattice(14, 12, h, 3.0);
+  const PointCloud c = lattice(14, 12, h);
   StateBasedBondOptions o;
   o.omega = rectangleBoundaryFunction(c, -7e-3, 7e-3, -6e-3, 6e-3, eps);
   o.stiffness = randomField(c.size(), 1.0, 4);

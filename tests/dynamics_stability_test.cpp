@@ -27,7 +27,7 @@ double exactLimit(DynamicProblem& problem) {
 }
 
 struct Case {
-  PointCloud cloud = lattice(11, 9, 1e-3, 3.0);
+  PointCloud cloud = lattice(11, 9, 1e-3);
   std::unique_ptr<StateBasedModel> model;
   std::unique_ptr<DynamicProblem> problem;
   Case(double nu, double contrast) {

@@ -6,19 +6,13 @@
 
 #include "geometry/point_cloud.hpp"
 #include "models/state_based_model.hpp"
+#include "scenes/dynamic_scene.hpp"
 
 namespace peristep::testing {
 
 // nx x ny lattice nodes at spacing h, centred at the origin, no collar (free edges).
-inline PointCloud lattice(std::size_t nx, std::size_t ny, double h, double epsOverH) {
-  GridSpec g;
-  g.nx = nx;
-  g.ny = ny;
-  g.Lx = static_cast<double>(nx - 1) * h;
-  g.Ly = static_cast<double>(ny - 1) * h;
-  g.deltaOverH = epsOverH;
-  g.collar = false;
-  return makeRectangle(g);
+inline PointCloud lattice(std::size_t nx, std::size_t ny, double h) {
+  return cellCentredLattice(nx, ny, h, -0.5 * static_cast<double>(nx - 1) * h, -0.5 * static_cast<double>(ny - 1) * h);
 }
 
 inline StateBasedMaterial plexiglass(double nu, double eps, HydrostaticLaw law = HydrostaticLaw::Quadratic) {

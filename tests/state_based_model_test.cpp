@@ -53,7 +53,7 @@ namespace {
 // A small plate with every ingredient switched on: hydrostatic force, non-uniform boundary function
 // and stiffness, a pre-crack, and displacements large enough to reach the softening branch.
 struct Plate {
-  PointCloud cloud = lattice(9, 8, 1e-3, 3.0);
+  PointCloud cloud = lattice(9, 8, 1e-3);
   double eps = 3e-3;
   StateBasedBondOptions options() const {
     StateBasedBondOptions o;
@@ -129,7 +129,7 @@ TEST_CASE("state-based linearization: directional derivative and assembled tange
 TEST_CASE("homogeneous strain: hydrostatic strain and energy density of 001:(2), (11)", "[state_based]") {
   // Interior point of a plate with a full horizon; strain small enough to stay in the elastic range.
   const double h = 1e-3, epsOverH = 8.0, eps = epsOverH * h;
-  const PointCloud c = lattice(41, 41, h, epsOverH);
+  const PointCloud c = lattice(41, 41, h);
   const double exx = 2e-6, eyy = -0.5e-6, exy = 0.7e-6;
   std::vector<double> u(2 * c.size());
   for (std::size_t p = 0; p < c.size(); ++p) {
@@ -159,7 +159,7 @@ TEST_CASE("homogeneous strain: hydrostatic strain and energy density of 001:(2),
 
 TEST_CASE("pre-crack cuts bonds and damage Z follows 001:(104)", "[state_based]") {
   const double h = 1e-3, eps = 3e-3;
-  const PointCloud c = lattice(9, 9, h, 3.0);  // nodes at multiples of h: a column sits on x = 0
+  const PointCloud c = lattice(9, 9, h);  // nodes at multiples of h: a column sits on x = 0
   StateBasedBondOptions o;
   o.horizon = eps;
   o.cuts = {Segment{0.0, -1.0, 0.0, 0.0}};  // crack along x = 0 below y = 0
