@@ -2,17 +2,23 @@
 // shares, K_IC (000:(5.2)-(5.3)), wall time and peak memory; write the load-displacement curve as CSV.
 //
 //   glass_ceramic [--h-um 8] [--fraction 0.2] [--seed 1] [--max-load-um 1] [--step-um 0.004]
-//                 [--solver umfpack] [--csv curve.csv] [--png damage.png]
+//                 [--solver umfpack] [--csv curve.csv] [--png damage.png] [--checkpoint state.bin]
+//
+// --checkpoint writes the run's state to that file (atomically) at most every 10 minutes, also inside a load
+// step between sub-iterations; a rerun with the same options continues from it, bit for bit, so a full-size
+// run can be spread over several sittings. Wall time and the profile add up over the sittings.
 //
 // --png draws the final damage over the microstructure with the host's colours (the picture
 // `peristep run` leaves), so one long run yields both the numbers and the picture.
 // h = 2 um is the paper's full size (413 x 213 = 87969 points with the collar).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
 
+#include "core/byte_stream.hpp"
 #include "core/errors.hpp"
 #include "damage_picture.hpp"
 #include "core/memory.hpp"
@@ -21,10 +27,44 @@
 
 using namespace peristep;
 
+namespace {
+
+// What a sitting must carry to the next one besides the solver state: where the loading stands and the
+// totals so far.
+struct Progress {
+  int step = 1;  // load step in progress (1-based)
+  double seconds = 0;
+  LoadStepReport sum;
+};
+
+void writeCheckpoint(const std::string& path, const Progress& p, const GlassCeramicSpecimen& g) {
+  ByteWriter w;
+  w.put(p);
+  w.putArray(g.saveState());
+  const std::vector<std::uint8_t> bytes = w.take();
+  const std::string partial = path + ".partial";
+  std::ofstream(partial, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                                static_cast<std::streamsize>(bytes.size()));
+  std::filesystem::rename(partial, path);
+}
+
+Progress readCheckpoint(const std::string& path, GlassCeramicSpecimen& g) {
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ByteReader r(bytes);
+  const auto p = r.get<Progress>();
+  const auto state = r.getArray<std::uint8_t>();
+  r.expectEnd();
+  g.restoreState(state);
+  return p;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) try {
   double hUm = 8, fraction = 0.2, maxLoadUm = 1.0, stepUm = 0.004;
   std::uint64_t seed = 1;
-  std::string solver = "umfpack", csvPath, pngPath;
+  std::string solver = "umfpack", csvPath, pngPath, checkpointPath;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--h-um") hUm = std::stod(value);
@@ -35,6 +75,7 @@ int main(int argc, char** argv) try {
     else if (key == "--solver") solver = value;
     else if (key == "--csv") csvPath = value;
     else if (key == "--png") pngPath = value;
+    else if (key == "--checkpoint") checkpointPath = value;
     else throw InvalidInput("unknown option " + key);
   }
   GlassCeramicSpec spec;
@@ -49,22 +90,36 @@ int main(int argc, char** argv) try {
   std::printf("# glass-ceramic h = %g um, %zu points, f = %.3f (target %.2f), seed %llu, set-up %.2f s\n", hUm,
               g.solver().discretization().cloud.size(), g.measuredCrystalFraction(), fraction,
               static_cast<unsigned long long>(seed), total.seconds());
+  Progress run;
+  const bool resumed = !checkpointPath.empty() && std::filesystem::exists(checkpointPath);
+  if (resumed) {
+    run = readCheckpoint(checkpointPath, g);
+    std::printf("# resumed from %s in load step %d (%.0f s before)\n", checkpointPath.c_str(), run.step, run.seconds);
+  }
+  const auto elapsed = [&] { return run.seconds + total.seconds(); };
+  if (!checkpointPath.empty()) {
+    g.onSubIteration([&, sinceSaved = Stopwatch()]() mutable {
+      if (sinceSaved.seconds() < 600) return;
+      sinceSaved.lap();
+      Progress now = run;
+      now.seconds = elapsed();
+      writeCheckpoint(checkpointPath, now, g);
+    });
+  }
   std::ofstream csv;
   if (!csvPath.empty()) {
-    csv.open(csvPath);
-    csv << "load_um,reaction_force_N_per_m,broken_pairs,sub_iterations,factorizations,krylov_iterations,"
-           "assembly_s,factorization_s,solve_s,bond_check_s,seconds\n";
+    csv.open(csvPath, resumed ? std::ios::app : std::ios::trunc);
+    if (!resumed)
+      csv << "load_um,reaction_force_N_per_m,broken_pairs,sub_iterations,factorizations,krylov_iterations,"
+             "assembly_s,factorization_s,solve_s,bond_check_s,seconds\n";
   }
   std::printf("%9s %14s %8s %5s %5s %6s %8s\n", "U_D um", "force N/m", "broken", "sub", "fact", "krylov", "time s");
   const int steps = static_cast<int>(std::lround(maxLoadUm / stepUm));
-  std::size_t broken = 0;
-  LoadStepReport sum;  // totals over the run, for the profile line
-  int done = 0;
-  for (int k = 1; k <= steps; ++k) {
-    const double U = k * stepUm * 1e-6;
+  LoadStepReport& sum = run.sum;  // totals over the run, for the profile line
+  for (; run.step <= steps && !g.crackReachedRightEdge(); ++run.step) {
+    const double U = run.step * stepUm * 1e-6;
     const LoadStepReport r = g.advance(U);
-    broken += r.newlyBroken;
-    ++done;
+    const std::size_t broken = g.solver().brokenByLoading().size();
     sum.subIterations += r.subIterations;
     sum.factorizations += r.factorizations;
     sum.krylovIterations += r.krylovIterations;
@@ -75,16 +130,15 @@ int main(int argc, char** argv) try {
     if (csv)
       csv << U * 1e6 << ',' << g.reactionForce() << ',' << broken << ',' << r.subIterations << ','
           << r.factorizations << ',' << r.krylovIterations << ',' << r.assemblySeconds << ','
-          << r.factorizationSeconds << ',' << r.solveSeconds << ',' << r.bondCheckSeconds << ','
-          << total.seconds() << '\n';
-    if (r.newlyBroken > 0 || k % 25 == 0)
+          << r.factorizationSeconds << ',' << r.solveSeconds << ',' << r.bondCheckSeconds << ',' << elapsed()
+          << std::endl;
+    if (r.newlyBroken > 0 || run.step % 25 == 0)
       std::printf("%9.3f %14.6e %8zu %5d %5d %6d %8.1f\n", U * 1e6, g.reactionForce(), broken, r.subIterations,
-                  r.factorizations, r.krylovIterations, total.seconds());
-    if (g.crackReachedRightEdge()) break;
+                  r.factorizations, r.krylovIterations, elapsed());
   }
   std::printf("profile: %d load steps, %d solves, %d factorizations %.1f s, %d GMRES iterations, solves %.1f s, "
               "assembly %.1f s, bond checks %.1f s\n",
-              done, sum.subIterations, sum.factorizations, sum.factorizationSeconds, sum.krylovIterations,
+              run.step - 1, sum.subIterations, sum.factorizations, sum.factorizationSeconds, sum.krylovIterations,
               sum.solveSeconds, sum.assemblySeconds, sum.bondCheckSeconds);
   const CrackShares L = g.crackShares();
   std::printf("crack reached the right edge: %s\n", g.crackReachedRightEdge() ? "yes" : "no");
@@ -92,7 +146,7 @@ int main(int argc, char** argv) try {
               L.glass * 1e6, 100 * L.glass / L.total(), L.crystal * 1e6, 100 * L.crystal / L.total(),
               L.interface * 1e6, 100 * L.interface / L.total(), g.projectedCrackLength() * 1e6);
   std::printf("G_IC = %.3f J/m^2, K_IC = %.3f MPa m^0.5, wall %.1f s, peak %.0f MB\n", g.energyReleaseRate(),
-              g.toughnessKIC() / 1e6, total.seconds(), static_cast<double>(peakMemoryBytes()) / 1048576.0);
+              g.toughnessKIC() / 1e6, elapsed(), static_cast<double>(peakMemoryBytes()) / 1048576.0);
   if (!pngPath.empty()) {
     host::writePng(pngPath, host::damagePicture(spec.grid.ny, spec.grid.nx, g.damage(), g.youngsModulus()));
     std::printf("damage picture: %s\n", pngPath.c_str());

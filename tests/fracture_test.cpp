@@ -197,6 +197,36 @@ TEST_CASE("a checkpoint taken while cracking repeats the run bit for bit, in the
   }
 }
 
+TEST_CASE("a checkpoint taken between sub-iterations continues the load step bit for bit",
+          "[fracture][checkpoint]") {
+  // Pure glass: the crack runs in few load steps with many sub-iterations each. Save inside the first
+  // step with at least 3 sub-iterations, after its second one; a fresh specimen restored from that state
+  // and advanced at the same load must end the step, and the next ones, exactly as the uninterrupted run.
+  const GlassCeramicSpec spec = coarseSpecimen(0.0);
+  GlassCeramicSpecimen g(spec);
+  std::vector<std::uint8_t> state;
+  int subIterations = 0;
+  g.onSubIteration([&] {
+    if (++subIterations == 2) state = g.saveState();
+  });
+  int step = 0;
+  while (step < 250) {
+    subIterations = 0;
+    state.clear();
+    if (g.advance(++step * 4e-9).subIterations >= 3) break;
+  }
+  REQUIRE(!state.empty());
+  const Snapshot endOfStep = snapshot(g);
+  const std::vector<Snapshot> reference = loadSteps(g, step + 1, step + 5);
+
+  GlassCeramicSpecimen other(spec);
+  other.restoreState(state);
+  CHECK(other.solver().brokenByLoading().size() < endOfStep.broken.size());  // saved mid-step
+  other.advance(step * 4e-9);
+  CHECK(snapshot(other) == endOfStep);
+  CHECK(loadSteps(other, step + 1, step + 5) == reference);
+}
+
 TEST_CASE("load steps without breaking reuse one factorization; breaking reuses it through GMRES",
           "[fracture][solver-reuse]") {
   GlassCeramicSpecimen g(coarseSpecimen(0.0));

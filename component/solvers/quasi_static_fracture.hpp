@@ -2,6 +2,7 @@
 // Quasi-static brittle fracture with the heterogeneous LPS model (000 Sec. 3.3, Sec. 5): at each load
 // solve, break every bond over its critical stretch, re-solve at the same load until no new bond breaks.
 #include <array>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -34,6 +35,9 @@ class QuasiStaticFracture {
                       std::vector<double> unitCollarDisplacement, const std::string& solverName = "umfpack");
 
   LoadStepReport advance(double load);
+  // Called after every sub-iteration that broke bonds, with the state consistent (saveState() then
+  // advance() at the same load continues the step exactly): long runs checkpoint from here.
+  void onSubIteration(std::function<void()> hook) { subIterationHook_ = std::move(hook); }
 
   const LpsDiscretization& discretization() const { return *disc_; }
   const BondState& bonds() const { return bonds_; }
@@ -78,6 +82,7 @@ class QuasiStaticFracture {
   std::vector<double> u_, x_;      // u of all points; last unknown vector (warm start)
   std::vector<std::size_t> brokenByLoading_;
   double load_ = 0;
+  std::function<void()> subIterationHook_;
 };
 
 }  // namespace peristep
