@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "fracture/bond_state.hpp"
+#include "fracture/toughness.hpp"
 #include "models/lps_material.hpp"
 #include "scenes/glass_ceramic.hpp"
 #include "solvers/quasi_static_fracture.hpp"
@@ -90,6 +91,36 @@ TEST_CASE("damage is zero before any break and in [0, 1] always", "[fracture]") 
   CHECK(some);
 }
 
+TEST_CASE("a crack's centre line measures its length, not its count of broken bonds", "[fracture][toughness]") {
+  GridSpec g;
+  g.nx = g.ny = 41;  // h = 1
+  g.Lx = g.Ly = 40.0;
+  g.deltaOverH = 3.0;
+  const PointCloud c = makeRectangle(g);
+  const Neighbours nb = findNeighbours(c, c.delta);
+  const std::vector<double> one(c.size(), 1.0);
+  const auto brokenPairs = [&](const std::vector<Segment>& crack) {
+    BondState b = makeBondState(c, nb, one, one, one);
+    for (const Segment& s : crack) breakCrossing(b, c, nb, s);
+    std::vector<std::size_t> pairs;
+    for (std::size_t k = 0; k < b.intact.size(); ++k)
+      if (!b.intact[k] && k < b.reverse[k]) pairs.push_back(k);
+    return pairs;
+  };
+  SECTION("straight") {
+    const auto bonds = brokenPairs({{-10.0, 0.5, 10.0, 0.5}});
+    CHECK(centreLineLength(c, nb, bonds, -10.0, 0.5, 10.0) == Approx(20.0).margin(1.0));
+    // 18 broken pairs per unit length for delta = 3h: the count would say 18 times too much per bond.
+    CHECK(static_cast<double>(bonds.size()) > 17.0 * 20.0);
+  }
+  SECTION("slanted, and kinked") {
+    const auto slanted = brokenPairs({{-10.0, 0.5, 10.0, 8.5}});
+    CHECK(centreLineLength(c, nb, slanted, -10.0, 0.5, 10.0) == Approx(std::hypot(20.0, 8.0)).margin(1.0));
+    const auto kinked = brokenPairs({{-10.0, 0.5, 0.0, 8.5}, {0.0, 8.5, 10.0, 0.5}});
+    CHECK(centreLineLength(c, nb, kinked, -10.0, 0.5, 10.0) == Approx(2 * std::hypot(10.0, 8.0)).margin(1.5));
+  }
+}
+
 namespace {
 
 GlassCeramicSpec coarseSpecimen(double fraction) {
@@ -137,11 +168,10 @@ TEST_CASE("glass-ceramic, coarse grid: the crack runs from the pre-crack tip to 
   const double mx = 0.5 * (c.x[owner] + c.x[nb.index[broken.front()]]);
   const double my = 0.5 * (c.y[owner] + c.y[nb.index[broken.front()]]);
   CHECK(std::hypot(mx + 300e-6, my) < 2 * c.delta);
-  // The issue asks for 10%; at h = 16 um both phases come out +10.7% (0.831 and 3.872 MPa m^0.5): the
-  // broken-bond count of the nearly straight crack stands for 858 um of crack over W = 700 um (the band
-  // of broken bonds is wider than one line of crossing bonds). Exact solves give the same numbers, so
-  // this is the crack-length measure on this grid, not solver error; 12% keeps the check meaningful.
-  CHECK(g.toughnessKIC() == Approx(expected).epsilon(0.12));
+  // A nearly straight crack: its centre line is about W long, so G_IC is about the phase's G. (Counting
+  // broken bonds instead gave 858 um for W = 700 um here, +10.7% on K_IC.)
+  CHECK(g.crackLength() == Approx(g.projectedCrackLength()).epsilon(0.05));
+  CHECK(g.toughnessKIC() == Approx(expected).epsilon(0.10));
 }
 
 namespace {

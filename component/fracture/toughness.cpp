@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace peristep {
 
@@ -14,25 +15,45 @@ std::size_t ownerOf(const Neighbours& nb, std::size_t k) {
 
 }  // namespace
 
-double crackLengthPerBond(double h, double delta) { return 3.0 * std::pow(h, 4) / (2.0 * std::pow(delta, 3)); }
-
-CrackShares crackShares(const PointCloud& c, const Neighbours& nb, const std::vector<std::size_t>& bonds,
-                        const std::vector<std::uint8_t>& crystal) {
-  CrackShares s;
-  const double each = crackLengthPerBond(c.h, c.delta);
+double centreLineLength(const PointCloud& c, const Neighbours& nb, const std::vector<std::size_t>& bonds,
+                        double x0, double y0, double xEnd) {
+  std::map<long, std::pair<double, int>> columns;  // column -> (sum of midpoint y, count)
   for (std::size_t k : bonds) {
     const std::size_t p = ownerOf(nb, k), q = nb.index[k];
-    const int phases = crystal[p] + crystal[q];
+    const double mx = 0.5 * (c.x[p] + c.x[q]);
+    if (mx < x0 || mx > xEnd) continue;
+    auto& [sum, count] = columns[std::lround((mx - x0) / c.h)];
+    sum += 0.5 * (c.y[p] + c.y[q]);
+    ++count;
+  }
+  double length = 0, x = x0, y = y0;
+  for (const auto& [column, value] : columns) {
+    const double cx = std::min(x0 + static_cast<double>(column) * c.h, xEnd), cy = value.first / value.second;
+    length += std::hypot(cx - x, cy - y);
+    x = cx;
+    y = cy;
+  }
+  return length;
+}
+
+CrackShares crackShares(const Neighbours& nb, const std::vector<std::size_t>& bonds,
+                        const std::vector<std::uint8_t>& crystal, double length) {
+  CrackShares s;
+  if (bonds.empty()) return s;
+  const double each = length / static_cast<double>(bonds.size());
+  for (std::size_t k : bonds) {
+    const int phases = crystal[ownerOf(nb, k)] + crystal[nb.index[k]];
     (phases == 0 ? s.glass : phases == 2 ? s.crystal : s.interface) += each;
   }
   return s;
 }
 
-double crackEnergy(const PointCloud& c, const Neighbours& nb, const std::vector<std::size_t>& bonds,
-                   const std::vector<double>& G) {
+double crackEnergy(const Neighbours& nb, const std::vector<std::size_t>& bonds,
+                   const std::vector<double>& G, double length) {
+  if (bonds.empty()) return 0.0;
   double sum = 0;
   for (std::size_t k : bonds) sum += 0.5 * (G[ownerOf(nb, k)] + G[nb.index[k]]);
-  return sum * crackLengthPerBond(c.h, c.delta);
+  return sum / static_cast<double>(bonds.size()) * length;
 }
 
 double toughnessKIC(double GIC, double f, const PhaseConstants& m) {

@@ -148,8 +148,13 @@ std::vector<std::size_t> GlassCeramicSpecimen::mainCrackBonds() const {
   return main;
 }
 
+double GlassCeramicSpecimen::crackLength() const {
+  return centreLineLength(disc_->cloud, disc_->neighbours, mainCrackBonds(), tipX_, 0.0,
+                          tipX_ + projectedCrackLength());
+}
+
 CrackShares GlassCeramicSpecimen::crackShares() const {
-  return peristep::crackShares(disc_->cloud, disc_->neighbours, mainCrackBonds(), crystal_);
+  return peristep::crackShares(disc_->neighbours, mainCrackBonds(), crystal_, crackLength());
 }
 
 double GlassCeramicSpecimen::projectedCrackLength() const {
@@ -162,7 +167,7 @@ double GlassCeramicSpecimen::projectedCrackLength() const {
 
 double GlassCeramicSpecimen::energyReleaseRate() const {
   const double W = projectedCrackLength();
-  return W > 0 ? crackEnergy(disc_->cloud, disc_->neighbours, mainCrackBonds(), G_) / W : 0.0;
+  return W > 0 ? crackEnergy(disc_->neighbours, mainCrackBonds(), G_, crackLength()) / W : 0.0;
 }
 
 double GlassCeramicSpecimen::toughnessKIC() const {

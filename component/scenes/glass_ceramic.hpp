@@ -44,6 +44,9 @@ class GlassCeramicSpecimen {
   // whose midpoints lie within 1.5 h of each other, started at the tip. Damage elsewhere (e.g. at the
   // corners where the clamped edges meet the free ones) does not count towards the crack.
   std::vector<std::size_t> mainCrackBonds() const;
+  // Length of the main crack along its centre line (fracture/toughness.hpp), from the pre-crack tip.
+  double crackLength() const;
+  // That length shared among the phases by the broken bonds (000 Sec. 5: L1, L2, L_i).
   CrackShares crackShares() const;
   // Projected crack length W along x, from the pre-crack tip to the farthest bond of the main crack.
   double projectedCrackLength() const;

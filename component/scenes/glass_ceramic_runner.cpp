@@ -63,7 +63,7 @@ class GlassCeramicRunner final : public Runner {
   std::vector<double> youngsModulus() const override { return specimen_.youngsModulus(); }
   std::vector<double> damage() const override { return specimen_.damage(); }
   double reactionForce() const override { return specimen_.reactionForce(); }
-  double crackLength() const override { return specimen_.crackShares().total(); }
+  double crackLength() const override { return specimen_.crackLength(); }
   double brokenBonds() const override {
     const auto& d = specimen_.solver().discretization();
     return static_cast<double>(brokenPairs(specimen_.solver().bonds(), d.cloud, d.neighbours));
