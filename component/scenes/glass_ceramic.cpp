@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/errors.hpp"
 #include "models/lps_material.hpp"
@@ -125,8 +126,14 @@ std::vector<std::size_t> GlassCeramicSpecimen::mainCrackBonds() const {
     mx[i] = 0.5 * (c.x[p] + c.x[q]);
     my[i] = 0.5 * (c.y[p] + c.y[q]);
   }
-  // Breadth-first search over midpoints; the lists are a few thousand bonds, so pairs are tested directly.
-  const double link2 = 2.25 * c.h * c.h;
+  // Breadth-first search over midpoints, with the midpoints binned in cells of the link length so
+  // that only the 3 x 3 cells around a midpoint are searched (full size: ~1e4 broken pairs).
+  const double link = 1.5 * c.h, link2 = link * link;
+  const auto cellOf = [&](std::size_t i) {
+    return std::pair{static_cast<long>(std::floor(mx[i] / link)), static_cast<long>(std::floor(my[i] / link))};
+  };
+  std::map<std::pair<long, long>, std::vector<std::size_t>> cells;
+  for (std::size_t i = 0; i < broken.size(); ++i) cells[cellOf(i)].push_back(i);
   std::vector<char> reached(broken.size(), 0);
   std::vector<std::size_t> queue;
   for (std::size_t i = 0; i < broken.size(); ++i)
@@ -136,10 +143,16 @@ std::vector<std::size_t> GlassCeramicSpecimen::mainCrackBonds() const {
     }
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::size_t i = queue[head];
-    for (std::size_t j = 0; j < broken.size(); ++j)
-      if (!reached[j] && (mx[j] - mx[i]) * (mx[j] - mx[i]) + (my[j] - my[i]) * (my[j] - my[i]) <= link2) {
-        reached[j] = 1;
-        queue.push_back(j);
+    const auto [cx, cy] = cellOf(i);
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy) {
+        const auto cell = cells.find({cx + dx, cy + dy});
+        if (cell == cells.end()) continue;
+        for (std::size_t j : cell->second)
+          if (!reached[j] && (mx[j] - mx[i]) * (mx[j] - mx[i]) + (my[j] - my[i]) * (my[j] - my[i]) <= link2) {
+            reached[j] = 1;
+            queue.push_back(j);
+          }
       }
   }
   std::vector<std::size_t> main;
