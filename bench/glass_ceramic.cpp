@@ -3,10 +3,12 @@
 //
 //   glass_ceramic [--h-um 8] [--fraction 0.2] [--seed 1] [--max-load-um 1] [--step-um 0.004]
 //                 [--solver umfpack] [--csv curve.csv] [--png damage.png] [--checkpoint state.bin]
+//                 [--checkpoint-minutes 10]
 //
-// --checkpoint writes the run's state to that file (atomically) at most every 10 minutes, also inside a load
+// --checkpoint writes the run's state to that file (atomically) every 10 minutes or so, also inside a load
 // step between sub-iterations; a rerun with the same options continues from it, bit for bit, so a full-size
-// run can be spread over several sittings. Wall time and the profile add up over the sittings.
+// run can be spread over several sittings (under other options it refuses; remove the file to start
+// afresh). Wall time and the profile add up over the sittings.
 //
 // --png draws the final damage over the microstructure with the host's colours (the picture
 // `peristep run` leaves), so one long run yields both the numbers and the picture.
@@ -29,9 +31,17 @@ using namespace peristep;
 
 namespace {
 
-// What a sitting must carry to the next one besides the solver state: where the loading stands and the
-// totals so far.
+// The options that define the run: a checkpoint is only continued under the same ones.
+struct RunOptions {
+  double hUm, fraction, stepUm;
+  std::uint64_t seed;
+  bool operator==(const RunOptions&) const = default;
+};
+
+// What a sitting must carry to the next one besides the solver state: the options, where the loading
+// stands and the totals so far.
 struct Progress {
+  RunOptions options;
   int step = 1;  // load step in progress (1-based)
   double seconds = 0;
   LoadStepReport sum;
@@ -43,16 +53,21 @@ void writeCheckpoint(const std::string& path, const Progress& p, const GlassCera
   w.putArray(g.saveState());
   const std::vector<std::uint8_t> bytes = w.take();
   const std::string partial = path + ".partial";
-  std::ofstream(partial, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                                static_cast<std::streamsize>(bytes.size()));
-  std::filesystem::rename(partial, path);
+  std::ofstream out(partial, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw InvalidInput("cannot write the checkpoint " + partial);
+  std::filesystem::rename(partial, path);  // atomic: the file holds the old state or the whole new one
 }
 
-Progress readCheckpoint(const std::string& path, GlassCeramicSpecimen& g) {
+Progress readCheckpoint(const std::string& path, const RunOptions& options, GlassCeramicSpecimen& g) {
   std::ifstream in(path, std::ios::binary);
   const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ByteReader r(bytes);
   const auto p = r.get<Progress>();
+  if (!(p.options == options))
+    throw InvalidInput("checkpoint " + path + " belongs to another run (h, fraction, step or seed differ); "
+                       "remove it to start afresh");
   const auto state = r.getArray<std::uint8_t>();
   r.expectEnd();
   g.restoreState(state);
@@ -62,7 +77,7 @@ Progress readCheckpoint(const std::string& path, GlassCeramicSpecimen& g) {
 }  // namespace
 
 int main(int argc, char** argv) try {
-  double hUm = 8, fraction = 0.2, maxLoadUm = 1.0, stepUm = 0.004;
+  double hUm = 8, fraction = 0.2, maxLoadUm = 1.0, stepUm = 0.004, checkpointMinutes = 10;
   std::uint64_t seed = 1;
   std::string solver = "umfpack", csvPath, pngPath, checkpointPath;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -76,6 +91,7 @@ int main(int argc, char** argv) try {
     else if (key == "--csv") csvPath = value;
     else if (key == "--png") pngPath = value;
     else if (key == "--checkpoint") checkpointPath = value;
+    else if (key == "--checkpoint-minutes") checkpointMinutes = std::stod(value);
     else throw InvalidInput("unknown option " + key);
   }
   GlassCeramicSpec spec;
@@ -91,15 +107,16 @@ int main(int argc, char** argv) try {
               g.solver().discretization().cloud.size(), g.measuredCrystalFraction(), fraction,
               static_cast<unsigned long long>(seed), total.seconds());
   Progress run;
+  run.options = {hUm, fraction, stepUm, seed};
   const bool resumed = !checkpointPath.empty() && std::filesystem::exists(checkpointPath);
   if (resumed) {
-    run = readCheckpoint(checkpointPath, g);
+    run = readCheckpoint(checkpointPath, run.options, g);
     std::printf("# resumed from %s in load step %d (%.0f s before)\n", checkpointPath.c_str(), run.step, run.seconds);
   }
   const auto elapsed = [&] { return run.seconds + total.seconds(); };
   if (!checkpointPath.empty()) {
     g.onSubIteration([&, sinceSaved = Stopwatch()]() mutable {
-      if (sinceSaved.seconds() < 600) return;
+      if (sinceSaved.seconds() < 60 * checkpointMinutes) return;
       sinceSaved.lap();
       Progress now = run;
       now.seconds = elapsed();
