@@ -163,8 +163,7 @@ TEST_CASE("glass-ceramic, coarse grid: the crack runs from the pre-crack tip to 
   REQUIRE(!broken.empty());
   const PointCloud& c = g.solver().discretization().cloud;
   const Neighbours& nb = g.solver().discretization().neighbours;
-  const auto owner = static_cast<std::size_t>(
-      std::upper_bound(nb.offset.begin(), nb.offset.end(), broken.front()) - nb.offset.begin() - 1);
+  const std::size_t owner = nb.owner(broken.front());
   const double mx = 0.5 * (c.x[owner] + c.x[nb.index[broken.front()]]);
   const double my = 0.5 * (c.y[owner] + c.y[nb.index[broken.front()]]);
   CHECK(std::hypot(mx + 300e-6, my) < 2 * c.delta);

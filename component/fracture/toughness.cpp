@@ -6,20 +6,11 @@
 
 namespace peristep {
 
-namespace {
-
-// Owner of a CSR position, by bisection of the row offsets.
-std::size_t ownerOf(const Neighbours& nb, std::size_t k) {
-  return static_cast<std::size_t>(std::upper_bound(nb.offset.begin(), nb.offset.end(), k) - nb.offset.begin() - 1);
-}
-
-}  // namespace
-
 double centreLineLength(const PointCloud& c, const Neighbours& nb, const std::vector<std::size_t>& bonds,
                         double x0, double y0, double xEnd) {
   std::map<long, std::pair<double, int>> columns;  // column -> (sum of midpoint y, count)
   for (std::size_t k : bonds) {
-    const std::size_t p = ownerOf(nb, k), q = nb.index[k];
+    const std::size_t p = nb.owner(k), q = nb.index[k];
     const double mx = 0.5 * (c.x[p] + c.x[q]);
     if (mx < x0 || mx > xEnd) continue;
     auto& [sum, count] = columns[std::lround((mx - x0) / c.h)];
@@ -42,7 +33,7 @@ CrackShares crackShares(const Neighbours& nb, const std::vector<std::size_t>& bo
   if (bonds.empty()) return s;
   const double each = length / static_cast<double>(bonds.size());
   for (std::size_t k : bonds) {
-    const int phases = crystal[ownerOf(nb, k)] + crystal[nb.index[k]];
+    const int phases = crystal[nb.owner(k)] + crystal[nb.index[k]];
     (phases == 0 ? s.glass : phases == 2 ? s.crystal : s.interface) += each;
   }
   return s;
@@ -52,7 +43,7 @@ double crackEnergy(const Neighbours& nb, const std::vector<std::size_t>& bonds,
                    const std::vector<double>& G, double length) {
   if (bonds.empty()) return 0.0;
   double sum = 0;
-  for (std::size_t k : bonds) sum += 0.5 * (G[ownerOf(nb, k)] + G[nb.index[k]]);
+  for (std::size_t k : bonds) sum += 0.5 * (G[nb.owner(k)] + G[nb.index[k]]);
   return sum / static_cast<double>(bonds.size()) * length;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // Neighbour lists within the horizon, stored as CSR ("bonds").
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -17,6 +18,10 @@ struct Neighbours {
   std::size_t bonds() const { return index.size(); }
   std::size_t begin(std::size_t p) const { return offset[p]; }
   std::size_t end(std::size_t p) const { return offset[p + 1]; }
+  // The point whose row holds bond position k (bisection of the row offsets).
+  std::size_t owner(std::size_t k) const {
+    return static_cast<std::size_t>(std::upper_bound(offset.begin(), offset.end(), k) - offset.begin() - 1);
+  }
 };
 
 // Cell-list search in O(points * neighbours). Points at exactly the radius are included (up to a

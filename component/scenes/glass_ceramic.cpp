@@ -108,21 +108,13 @@ std::vector<double> GlassCeramicSpecimen::youngsModulus() const { return domainV
 
 double GlassCeramicSpecimen::reactionForce() const { return fracture_->collarForce(topCollar_)[1]; }
 
-namespace {
-
-std::size_t ownerOf(const Neighbours& nb, std::size_t k) {
-  return static_cast<std::size_t>(std::upper_bound(nb.offset.begin(), nb.offset.end(), k) - nb.offset.begin() - 1);
-}
-
-}  // namespace
-
 std::vector<std::size_t> GlassCeramicSpecimen::mainCrackBonds() const {
   const PointCloud& c = disc_->cloud;
   const Neighbours& nb = disc_->neighbours;
   const std::vector<std::size_t>& broken = fracture_->brokenByLoading();
   std::vector<double> mx(broken.size()), my(broken.size());
   for (std::size_t i = 0; i < broken.size(); ++i) {
-    const std::size_t p = ownerOf(nb, broken[i]), q = nb.index[broken[i]];
+    const std::size_t p = nb.owner(broken[i]), q = nb.index[broken[i]];
     mx[i] = 0.5 * (c.x[p] + c.x[q]);
     my[i] = 0.5 * (c.y[p] + c.y[q]);
   }
@@ -161,26 +153,34 @@ std::vector<std::size_t> GlassCeramicSpecimen::mainCrackBonds() const {
   return main;
 }
 
-double GlassCeramicSpecimen::crackLength() const {
-  return centreLineLength(disc_->cloud, disc_->neighbours, mainCrackBonds(), tipX_, 0.0,
-                          tipX_ + projectedCrackLength());
-}
-
-CrackShares GlassCeramicSpecimen::crackShares() const {
-  return peristep::crackShares(disc_->neighbours, mainCrackBonds(), crystal_, crackLength());
-}
-
-double GlassCeramicSpecimen::projectedCrackLength() const {
+double GlassCeramicSpecimen::projectedLength(const std::vector<std::size_t>& crack) const {
   const PointCloud& c = disc_->cloud;
   const Neighbours& nb = disc_->neighbours;
   double far = tipX_;
-  for (std::size_t k : mainCrackBonds()) far = std::max(far, 0.5 * (c.x[ownerOf(nb, k)] + c.x[nb.index[k]]));
+  for (std::size_t k : crack) far = std::max(far, 0.5 * (c.x[nb.owner(k)] + c.x[nb.index[k]]));
   return std::min(far, 0.5 * spec_.grid.Lx) - tipX_;
 }
 
+double GlassCeramicSpecimen::centreLength(const std::vector<std::size_t>& crack, double W) const {
+  return centreLineLength(disc_->cloud, disc_->neighbours, crack, tipX_, 0.0, tipX_ + W);
+}
+
+double GlassCeramicSpecimen::crackLength() const {
+  const std::vector<std::size_t> crack = mainCrackBonds();
+  return centreLength(crack, projectedLength(crack));
+}
+
+CrackShares GlassCeramicSpecimen::crackShares() const {
+  const std::vector<std::size_t> crack = mainCrackBonds();
+  return peristep::crackShares(disc_->neighbours, crack, crystal_, centreLength(crack, projectedLength(crack)));
+}
+
+double GlassCeramicSpecimen::projectedCrackLength() const { return projectedLength(mainCrackBonds()); }
+
 double GlassCeramicSpecimen::energyReleaseRate() const {
-  const double W = projectedCrackLength();
-  return W > 0 ? crackEnergy(disc_->neighbours, mainCrackBonds(), G_, crackLength()) / W : 0.0;
+  const std::vector<std::size_t> crack = mainCrackBonds();
+  const double W = projectedLength(crack);
+  return W > 0 ? crackEnergy(disc_->neighbours, crack, G_, centreLength(crack, W)) / W : 0.0;
 }
 
 double GlassCeramicSpecimen::toughnessKIC() const {

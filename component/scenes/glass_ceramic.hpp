@@ -60,6 +60,9 @@ class GlassCeramicSpecimen {
 
  private:
   std::vector<double> domainValues(const std::vector<double>& perPoint) const;
+  // W and the centre-line length of a crack given by its bonds (each query searches the main crack once).
+  double projectedLength(const std::vector<std::size_t>& crack) const;
+  double centreLength(const std::vector<std::size_t>& crack, double W) const;
 
   GlassCeramicSpec spec_;
   std::shared_ptr<const LpsDiscretization> disc_;
