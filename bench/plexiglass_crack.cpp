@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "energy_table.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
 #include "scenes/dynamic_run.hpp"
@@ -67,21 +68,26 @@ int rates(double eps, double T, const char* csvPath) {
 }
 
 // Where the crack-zone energy sits at the end: P.E. of each lattice row (points with Z > 1) per unit
-// crack length. Rows well behind the tip hold G_c per unit length when the model reproduces Griffith;
-// the rows of the process zone at the tip (Z > 1 but bonds not yet fully softened) hold less.
+// crack length, with the pre-crack left out and counted (energy_table.hpp). Rows well behind the tip
+// hold G_c per unit length when the model reproduces Griffith; the rows of the process zone at the tip
+// (Z > 1 but bonds not yet fully softened) hold less.
 void crackProfile(DynamicScene& scene, const std::vector<double>& u) {
   const std::size_t n = scene.cloud.size();
-  std::vector<double> Z(n), e(n), perRow(scene.ny, 0.0);
-  scene.model->damage(u.data(), Z.data());
-  scene.model->tensileEnergyDensity(u.data(), e.data());
-  for (std::size_t p = 0; p < n; ++p)
-    if (scene.material[p] && Z[p] > 1.0) perRow[p / scene.nx] += scene.model->pointVolume(p) * e[p];
-  const double Gc = scene.model->material().fractureEnergy();
-  std::printf("crack-zone energy per unit length, by row (G_c = %g J/m^2):\n%10s %12s %8s\n", Gc, "y [m]", "J/m^2", "/G_c");
+  const double Gc = scene.model->material().fractureEnergy(), h = scene.h();
+  std::vector<double> Z(n), e(n), perRow[2] = {std::vector<double>(scene.ny, 0.0), std::vector<double>(scene.ny, 0.0)};
+  for (const PreCrack mode : {PreCrack::leftOut, PreCrack::counted}) {
+    scene.model->damage(u.data(), Z.data(), mode);
+    scene.model->tensileEnergyDensity(u.data(), e.data(), mode);
+    std::vector<double>& row = perRow[mode == PreCrack::counted];
+    for (std::size_t p = 0; p < n; ++p)
+      if (scene.material[p] && Z[p] > 1.0) row[p / scene.nx] += scene.model->pointVolume(p) * e[p] / h;
+  }
+  std::printf("crack-zone energy per unit length, by row (G_c = %g J/m^2; * = pre-crack counted):\n%10s %12s %8s %8s\n",
+              Gc, "y [m]", "J/m^2", "/G_c", "*/G_c");
   for (std::size_t k = 0; k < scene.ny; ++k)
-    if (perRow[k] > 0)
-      std::printf("%10.5f %12.2f %8.3f\n", scene.y0 + static_cast<double>(k) * scene.h(), perRow[k] / scene.h(),
-                  perRow[k] / scene.h() / Gc);
+    if (perRow[1][k] > 0)
+      std::printf("%10.5f %12.2f %8.3f %8.3f\n", scene.y0 + static_cast<double>(k) * h, perRow[0][k], perRow[0][k] / Gc,
+                  perRow[1][k] / Gc);
 }
 
 int energy(double eps, double ratio, double T, const char* csvPath) {
@@ -95,27 +101,17 @@ int energy(double eps, double ratio, double T, const char* csvPath) {
   DynamicRunOptions o;
   o.endTime = T;
   o.reportInterval = 1e-6;
-  std::FILE* csv = csvPath ? std::fopen(csvPath, "w") : nullptr;
-  if (csv) std::fprintf(csv, "t_us,kinetic,elastic,work,balance,fracture_energy,crack_length,griffith,max_Z\n");
-  std::printf("%6s %11s %11s %11s %11s %11s %9s %11s %7s %7s\n", "t[us]", "kinetic", "elastic", "work", "balance",
-              "P.E.", "l [m]", "Gc l", "PE/GE", "max Z");
   const Stopwatch clock;
-  EnergyRecord e0;
   std::vector<double> u, lengths, energies;  // while the crack grows
-  const DynamicRunResult r = runDynamicScene(scene, o, [&](const TimeIntegrator& integrator, const EnergyRecord& e) {
-    if (e.time == 0) e0 = e;
-    u.assign(integrator.displacement(), integrator.displacement() + scene.problem->dofs());
-    const double ge = Gc * e.crackLength;
-    if (e.crackLength > 0) lengths.push_back(e.crackLength), energies.push_back(e.fractureEnergy);
-    std::printf("%6.1f %11.4e %11.4e %11.4e %11.3e %11.4e %9.5f %11.4e %7.3f %7.1f\n", e.time * 1e6, e.kinetic, e.elastic,
-                e.externalWork, e.balance(e0), e.fractureEnergy, e.crackLength, ge, ge > 0 ? e.fractureEnergy / ge : 0.0,
-                e.maxDamage);
-    std::fflush(stdout);
-    if (csv)
-      std::fprintf(csv, "%g,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.6f\n", e.time * 1e6, e.kinetic, e.elastic, e.externalWork,
-                   e.balance(e0), e.fractureEnergy, e.crackLength, ge, e.maxDamage);
-  });
-  if (csv) std::fclose(csv);
+  DynamicRunResult r;
+  {
+    bench::EnergyTable table(Gc, csvPath);
+    r = runDynamicScene(scene, o, [&](const TimeIntegrator& integrator, const EnergyRecord& e) {
+      u.assign(integrator.displacement(), integrator.displacement() + scene.problem->dofs());
+      if (e.crackLength > 0) lengths.push_back(e.crackLength), energies.push_back(e.fractureEnergy);
+      table.row(e);
+    });
+  }
   std::printf("wall time %.1f s for %ld steps (%.3e bond-updates/s), peak memory %.0f MB\n", clock.seconds(), r.stats.steps,
               static_cast<double>(scene.model->bonds().bonds()) * static_cast<double>(r.stats.steps) / clock.seconds(),
               static_cast<double>(peakMemoryBytes()) / 1e6);

@@ -188,3 +188,36 @@ TEST_CASE("pre-crack cuts bonds and damage Z follows 001:(104)", "[state_based]"
   }
   CHECK(Z[centre] == Approx(s * std::sqrt(Lmax) / m.material().f.inflection()).epsilon(1e-12));
 }
+
+TEST_CASE("a pre-crack counted as broken bonds holds G_c per unit length and enters Z", "[state_based]") {
+  // Two halves pulled apart rigidly across a cut through the whole plate: no intact bond is stretched,
+  // every cut pair is open. Counted (as the authors' code does), each cut pair holds f = c, which on a
+  // row across the crack adds up to G_c = 4 c M2/pi per unit length (001 Sec. 6.1.1).
+  const double h = 1e-3, eps = 8 * h;
+  const PointCloud c = lattice(41, 41, h);
+  StateBasedBondOptions o;
+  o.horizon = eps;
+  o.cuts = {Segment{0.5 * h, -1.0, 0.5 * h, 1.0}};
+  StateBasedModel m(plexiglass(0.25, eps), buildStateBasedBonds(c, o));
+  const double d = 1e-4;  // opening 2d: far beyond S_c
+  std::vector<double> u(2 * c.size(), 0.0), e(c.size()), Z(c.size());
+  for (std::size_t p = 0; p < c.size(); ++p) u[2 * p] = c.x[p] < 0.5 * h ? -d : d;
+
+  const auto rowEnergy = [&](PreCrack mode) {  // energy per unit crack length of the row y = 0
+    m.tensileEnergyDensity(u.data(), e.data(), mode);
+    double sum = 0;
+    for (std::size_t p = 0; p < c.size(); ++p)
+      if (std::abs(c.y[p]) < 1e-12) sum += m.pointVolume(p) * e[p] / h;
+    return sum;
+  };
+  CHECK(rowEnergy(PreCrack::leftOut) == 0.0);
+  const double Gc = m.material().fractureEnergy();
+  CHECK(rowEnergy(PreCrack::counted) == Approx(Gc).epsilon(0.02));
+
+  const std::size_t nextToCut = c.size() / 2;  // (0, 0): its shortest cut pair is the bond to (h, 0)
+  REQUIRE(std::hypot(c.x[nextToCut], c.y[nextToCut]) < 1e-12);
+  m.damage(u.data(), Z.data(), PreCrack::leftOut);
+  CHECK(Z[nextToCut] == 0.0);
+  m.damage(u.data(), Z.data(), PreCrack::counted);
+  CHECK(Z[nextToCut] == Approx(2 * d / (std::sqrt(h) * m.material().f.inflection())).epsilon(1e-12));
+}

@@ -33,6 +33,7 @@ StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBo
 
   const Neighbours nb = findNeighbours(cloud, eps);
   b.offset.assign(n + 1, 0);
+  b.preCrack.offset.assign(n + 1, 0);
   b.neighbour.reserve(nb.bonds());
   for (auto* v : {&b.qx, &b.qy, &b.w, &b.ws}) v->reserve(nb.bonds());
   for (std::size_t i = 0; i < n; ++i) {
@@ -42,19 +43,21 @@ StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBo
       const double L = std::hypot(dx, dy);
       const double J = influenceJ(L / eps);
       if (J <= 1e-12) continue;
-      if (bondCrossesAny(cloud.x[i], cloud.y[i], cloud.x[j], cloud.y[j], o.cuts)) continue;
       const double base = b.omega[j] * J * b.cellArea * partialAreaFraction(dx, dy, h, eps);
       // Two-point modulus: harmonic mean, as for the LPS model (DESIGN 5.1), so that a bond between a
       // soft and a stiff point is as soft as a series spring.
       const double kij = 2.0 * b.kappa[i] * b.kappa[j] / (b.kappa[i] + b.kappa[j]);
       const double sq = std::sqrt(L);
-      b.neighbour.push_back(j);
-      b.qx.push_back(dx / (L * sq));
-      b.qy.push_back(dy / (L * sq));
-      b.w.push_back(kij * base);
-      b.ws.push_back(base * sq);
+      const bool cut = bondCrossesAny(cloud.x[i], cloud.y[i], cloud.x[j], cloud.y[j], o.cuts);
+      BondList& list = cut ? b.preCrack : b;
+      list.neighbour.push_back(j);
+      list.qx.push_back(dx / (L * sq));
+      list.qy.push_back(dy / (L * sq));
+      list.w.push_back(kij * base);
+      if (!cut) b.ws.push_back(base * sq);
     }
     b.offset[i + 1] = b.neighbour.size();
+    b.preCrack.offset[i + 1] = b.preCrack.neighbour.size();
   }
   return b;
 }

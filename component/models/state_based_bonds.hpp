@@ -14,7 +14,7 @@ struct StateBasedBondOptions {
   double horizon = 0;                // eps [m]
   std::vector<double> omega;         // boundary function 001:(2)-(4) per point; empty: 1 everywhere
   std::vector<double> stiffness;     // per-point modulus factor kappa (heterogeneous plates); empty: 1
-  std::vector<Segment> cuts;         // pre-cracks: bonds crossing them are left out
+  std::vector<Segment> cuts;         // pre-cracks: bonds crossing them are left out (kept in preCrack)
 };
 
 // Structure of arrays, CSR by point. For bond (i, j) with xi = x_j - x_i, L = |xi|, e = xi/L:
@@ -24,15 +24,23 @@ struct StateBasedBondOptions {
 // The unit vector, |xi|, J and the partial-area weight enter the force only through these products,
 // so a bond update of the tensile force reads 28 bytes (index, q, w). Bonds with J = 0 (L >= eps)
 // carry no force and are not stored.
-struct StateBasedBonds {
-  double horizon = 0, cellArea = 0;
+struct BondList {
   std::vector<std::size_t> offset;      // size points + 1
   std::vector<std::uint32_t> neighbour;
-  std::vector<double> qx, qy, w, ws;
+  std::vector<double> qx, qy, w;
+
+  std::size_t bonds() const { return neighbour.size(); }
+};
+
+struct StateBasedBonds : BondList {
+  double horizon = 0, cellArea = 0;
+  std::vector<double> ws;
   std::vector<double> omega, kappa;     // per point
+  // The pairs a pre-crack cuts (no force). Only the diagnostics that count the pre-crack as broken
+  // bonds read them (StateBasedModel::damage and tensileEnergyDensity with PreCrack::counted).
+  BondList preCrack;
 
   std::size_t points() const { return offset.size() - 1; }
-  std::size_t bonds() const { return neighbour.size(); }
 };
 
 // The cloud must be a lattice of spacing cloud.h (the cell of each node is the h x h square around it).

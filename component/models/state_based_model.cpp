@@ -73,8 +73,10 @@ void StateBasedModel::force(const double* u, double* f) {
   }
 }
 
-void StateBasedModel::tensileEnergyDensity(const double* u, double* e) const {
+void StateBasedModel::tensileEnergyDensity(const double* u, double* e, PreCrack preCrack) const {
   const StateBasedBonds& b = bonds_;
+  const BondList& cut = b.preCrack;
+  const bool withCut = preCrack == PreCrack::counted;
   const double beta = material_.f.beta, eps = b.horizon;
   // 001:(3), (11): (1/(pi eps^2)) sum |xi| omega_i omega_j J/(eps |xi|) f(r) V_j Vbar_ij.
   const double scale = material_.f.c / (std::numbers::pi * eps * eps * eps);
@@ -89,6 +91,8 @@ void StateBasedModel::tensileEnergyDensity(const double* u, double* e) const {
       const double r = (u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k];
       s += b.w[k] * -std::expm1(-beta * r * r);  // 1 - exp without cancellation at small strain
     }
+    if (withCut)
+      for (std::size_t k = cut.offset[i]; k < cut.offset[i + 1]; ++k) s += cut.w[k];  // f saturated at c
     e[i] = scale * b.omega[i] * s;
   }
 }
@@ -108,21 +112,24 @@ double StateBasedModel::energy(const double* u) {
   return total * bonds_.cellArea;
 }
 
-void StateBasedModel::damage(const double* u, double* Z) const {
+void StateBasedModel::damage(const double* u, double* Z, PreCrack preCrack) const {
   const StateBasedBonds& b = bonds_;
+  const bool withCut = preCrack == PreCrack::counted;
   const double rstar = material_.f.inflection();
   const auto n = static_cast<std::ptrdiff_t>(points());
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
     const auto i = static_cast<std::size_t>(ii);
     const double ux = u[2 * i], uy = u[2 * i + 1];
-    double zmax = 0;
-    for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) {
-      const std::size_t j = b.neighbour[k];
-      // S/S_c = sqrt|xi| S / r* = r/r*.
-      zmax = std::max(zmax, ((u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k]) / rstar);
-    }
-    Z[i] = zmax;
+    const auto maxStretch = [&](const BondList& l) {  // S/S_c = sqrt|xi| S / r* = r/r*
+      double r = 0;
+      for (std::size_t k = l.offset[i]; k < l.offset[i + 1]; ++k) {
+        const std::size_t j = l.neighbour[k];
+        r = std::max(r, (u[2 * j] - ux) * l.qx[k] + (u[2 * j + 1] - uy) * l.qy[k]);
+      }
+      return r / rstar;
+    };
+    Z[i] = withCut ? std::max(maxStretch(b), maxStretch(b.preCrack)) : maxStretch(b);
   }
 }
 

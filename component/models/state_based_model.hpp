@@ -9,6 +9,10 @@
 
 namespace peristep {
 
+// Whether the pairs cut by a pre-crack enter the crack diagnostics. 001 Sec. 6.1.1 leaves it open; the
+// authors' code (NLMech) counts them as broken bonds: they enter Z and hold their saturated energy c.
+enum class PreCrack { leftOut, counted };
+
 class StateBasedModel final : public ForceModel {
  public:
   StateBasedModel(const StateBasedMaterial& material, StateBasedBonds bonds);
@@ -20,12 +24,13 @@ class StateBasedModel final : public ForceModel {
   Eigen::SparseMatrix<double> tangent(const double* u) override;
   double energy(const double* u) override;
 
-  // Per point: tensile energy density (1/(eps^d w_d)) int |y-x| W(S) dy of 001 Sec. 6.1.1 [J/m^3].
-  void tensileEnergyDensity(const double* u, double* e) const;
+  // Per point: tensile energy density (1/(eps^d w_d)) int |y-x| W(S) dy of 001 Sec. 6.1.1 [J/m^3];
+  // a counted pre-crack pair holds the energy of a fully broken bond, f = c.
+  void tensileEnergyDensity(const double* u, double* e, PreCrack preCrack = PreCrack::leftOut) const;
   // Per point: hydrostatic strain theta 001:(2) [m].
   void hydrostaticStrain(const double* u, double* theta) const;
   // Per point: damage indicator Z = max_y S/S_c, S_c = r*/sqrt(|y - x|), 001:(104); 0 without bonds.
-  void damage(const double* u, double* Z) const;
+  void damage(const double* u, double* Z, PreCrack preCrack = PreCrack::leftOut) const;
 
   const StateBasedMaterial& material() const { return material_; }
   const StateBasedBonds& bonds() const { return bonds_; }

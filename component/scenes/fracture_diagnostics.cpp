@@ -7,15 +7,19 @@
 namespace peristep {
 
 FractureDiagnostics::FractureDiagnostics(DynamicScene& scene)
-    : scene_(scene), Z_(scene.cloud.size(), 0.0), energyDensity_(scene.cloud.size(), 0.0) {}
+    : scene_(scene),
+      Z_(scene.cloud.size(), 0.0),
+      energyDensity_(scene.cloud.size(), 0.0),
+      scratchZ_(scene.cloud.size(), 0.0),
+      scratchEnergy_(scene.cloud.size(), 0.0) {}
 
-std::vector<double> FractureDiagnostics::crackLengths() const {
+std::vector<double> FractureDiagnostics::crackLengths(const std::vector<double>& Z) const {
   const PointCloud& c = scene_.cloud;
   const std::size_t n = c.size();
   const double eps = scene_.horizon();
   std::vector<int> owner(n, -1);
   std::deque<std::size_t> queue;
-  const auto cracked = [&](std::size_t p) { return scene_.material[p] && Z_[p] > 1.0; };
+  const auto cracked = [&](std::size_t p) { return scene_.material[p] && Z[p] > 1.0; };
   for (std::size_t k = 0; k < scene_.cracks.size(); ++k) {
     const Segment& s = scene_.cracks[k];
     for (std::size_t p = 0; p < n; ++p)
@@ -47,6 +51,21 @@ std::vector<double> FractureDiagnostics::crackLengths() const {
   return lengths;
 }
 
+// Samples the segment every h/8 and counts the samples whose lattice cell belongs to D.
+double FractureDiagnostics::lengthInMaterial(const Segment& s) const {
+  const double h = scene_.h(), L = std::hypot(s.x1 - s.x0, s.y1 - s.y0);
+  const auto samples = static_cast<std::size_t>(std::ceil(8.0 * L / h));
+  std::size_t inside = 0;
+  for (std::size_t k = 0; k < samples; ++k) {
+    const double t = (static_cast<double>(k) + 0.5) / static_cast<double>(samples);
+    const double i = std::round((s.x0 + t * (s.x1 - s.x0) - scene_.x0) / h);
+    const double j = std::round((s.y0 + t * (s.y1 - s.y0) - scene_.y0) / h);
+    if (i < 0 || j < 0 || i >= static_cast<double>(scene_.nx) || j >= static_cast<double>(scene_.ny)) continue;
+    inside += scene_.material[static_cast<std::size_t>(j) * scene_.nx + static_cast<std::size_t>(i)] ? 1 : 0;
+  }
+  return L * static_cast<double>(inside) / static_cast<double>(samples);
+}
+
 EnergyRecord FractureDiagnostics::measure(const TimeIntegrator& integrator) {
   StateBasedModel& model = *scene_.model;
   const double* u = integrator.displacement();
@@ -55,15 +74,26 @@ EnergyRecord FractureDiagnostics::measure(const TimeIntegrator& integrator) {
   r.kinetic = scene_.problem->kineticEnergy(integrator.velocity());
   r.elastic = model.energy(u);
   r.externalWork = integrator.externalWork();
+  const double V = model.pointVolume(0);
+  // 001 Sec. 6.1.1: P.E. is the tensile energy of the points of D with Z > 1.
+  const auto crackZone = [&](const std::vector<double>& Z, const std::vector<double>& e, double& energy, double& maxZ) {
+    for (std::size_t p = 0; p < Z.size(); ++p) {
+      if (!scene_.material[p]) continue;
+      maxZ = std::max(maxZ, Z[p]);
+      if (Z[p] > 1.0) energy += V * e[p];
+    }
+  };
   model.damage(u, Z_.data());
   model.tensileEnergyDensity(u, energyDensity_.data());
-  const double V = model.pointVolume(0);
-  for (std::size_t p = 0; p < Z_.size(); ++p) {
-    if (!scene_.material[p]) continue;
-    r.maxDamage = std::max(r.maxDamage, Z_[p]);
-    if (Z_[p] > 1.0) r.fractureEnergy += V * energyDensity_[p];  // 001 Sec. 6.1.1, P.E.
-  }
-  for (const double l : crackLengths()) r.crackLength += l;
+  crackZone(Z_, energyDensity_, r.fractureEnergy, r.maxDamage);
+  for (const double l : crackLengths(Z_)) r.crackLength += l;
+
+  model.damage(u, scratchZ_.data(), PreCrack::counted);
+  model.tensileEnergyDensity(u, scratchEnergy_.data(), PreCrack::counted);
+  crackZone(scratchZ_, scratchEnergy_, r.fractureEnergyWithPreCrack, r.maxDamageWithPreCrack);
+  const std::vector<double> grown = crackLengths(scratchZ_);
+  for (std::size_t k = 0; k < grown.size(); ++k)
+    r.crackLengthWithPreCrack += lengthInMaterial(scene_.cracks[k]) + grown[k];
   return r;
 }
 

@@ -14,6 +14,9 @@ struct EnergyRecord {
   double fractureEnergy = 0;   // P.E.: tensile energy of the points of D with Z > 1
   double crackLength = 0;      // sum over pre-cracks of the growth of their Z > 1 zone beyond the tip [m]
   double maxDamage = 0;        // max Z over D
+  // The same with the pre-crack counted as broken bonds, as in the authors' code (PreCrack::counted):
+  // Z and P.E. over the cut pairs too, and the length is the pre-crack's length in D plus the growth.
+  double fractureEnergyWithPreCrack = 0, crackLengthWithPreCrack = 0, maxDamageWithPreCrack = 0;
   // Energy balance residual against the initial record: kinetic + elastic - work - (kinetic0 + elastic0),
   // zero when energy is conserved.
   double balance(const EnergyRecord& initial) const {
@@ -28,14 +31,15 @@ class FractureDiagnostics {
   EnergyRecord measure(const TimeIntegrator& integrator);
   const std::vector<double>& damage() const { return Z_; }  // Z of the last measure()
 
-  // Crack growth: the points of D with Z > 1 are split among the pre-cracks by a breadth-first search
+ private:
+  // Crack growth: the points of D with Z > 1 (Z given) are split among the pre-cracks by a breadth-first search
   // over lattice neighbours started from those within eps of each crack tip; the length of crack c is
   // the largest advance (x - tip) . direction over its points.
-  std::vector<double> crackLengths() const;
+  std::vector<double> crackLengths(const std::vector<double>& Z) const;
+  double lengthInMaterial(const Segment& s) const;
 
- private:
   DynamicScene& scene_;
-  std::vector<double> Z_, energyDensity_;
+  std::vector<double> Z_, energyDensity_, scratchZ_, scratchEnergy_;
 };
 
 }  // namespace peristep
