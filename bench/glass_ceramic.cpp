@@ -48,6 +48,7 @@ struct Progress {
   int step = 1;  // load step in progress (1-based)
   double seconds = 0;
   LoadStepReport sum;
+  LoadStepReport stepSoFar;  // of the load step in progress, up to the checkpoint
 };
 
 void writeCheckpoint(const std::string& path, const Progress& p, const GlassCeramicSpecimen& g) {
@@ -123,11 +124,12 @@ int main(int argc, char** argv) try {
   }
   const auto elapsed = [&] { return run.seconds + total.seconds(); };
   if (!checkpointPath.empty()) {
-    g.onSubIteration([&, sinceSaved = Stopwatch()]() mutable {
+    g.onSubIteration([&, sinceSaved = Stopwatch()](const LoadStepReport& soFar) mutable {
       if (sinceSaved.seconds() < 60 * checkpointMinutes) return;
       sinceSaved.lap();
       Progress now = run;
       now.seconds = elapsed();
+      now.stepSoFar += soFar;  // a step resumed twice carries both earlier parts
       writeCheckpoint(checkpointPath, now, g);
     });
   }
@@ -143,15 +145,11 @@ int main(int argc, char** argv) try {
   LoadStepReport& sum = run.sum;  // totals over the run, for the profile line
   for (; run.step <= steps && !g.crackReachedRightEdge(); ++run.step) {
     const double U = run.step * stepUm * 1e-6;
-    const LoadStepReport r = g.advance(U);
+    LoadStepReport r = run.stepSoFar;  // the earlier sittings' part of a resumed step
+    r += g.advance(U);
+    run.stepSoFar = {};
+    sum += r;
     const std::size_t broken = g.solver().brokenByLoading().size();
-    sum.subIterations += r.subIterations;
-    sum.factorizations += r.factorizations;
-    sum.krylovIterations += r.krylovIterations;
-    sum.assemblySeconds += r.assemblySeconds;
-    sum.factorizationSeconds += r.factorizationSeconds;
-    sum.solveSeconds += r.solveSeconds;
-    sum.bondCheckSeconds += r.bondCheckSeconds;
     if (csv)
       csv << U * 1e6 << ',' << g.reactionForce() << ',' << broken << ',' << r.subIterations << ','
           << r.factorizations << ',' << r.krylovIterations << ',' << r.assemblySeconds << ','

@@ -56,7 +56,7 @@ class GlassCeramicSpecimen {
 
   std::vector<std::uint8_t> saveState() const { return fracture_->saveState(); }
   void restoreState(std::span<const std::uint8_t> b) { fracture_->restoreState(b); }
-  void onSubIteration(std::function<void()> hook) { fracture_->onSubIteration(std::move(hook)); }
+  void onSubIteration(std::function<void(const LoadStepReport&)> hook) { fracture_->onSubIteration(std::move(hook)); }
 
  private:
   std::vector<double> domainValues(const std::vector<double>& perPoint) const;

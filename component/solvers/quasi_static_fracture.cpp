@@ -178,7 +178,7 @@ LoadStepReport QuasiStaticFracture::advance(double load) {
     brokenByLoading_.insert(brokenByLoading_.end(), fresh.begin(), fresh.end());
     report.newlyBroken += fresh.size();
     assemble(&report);
-    if (subIterationHook_) subIterationHook_();
+    if (subIterationHook_) subIterationHook_(report);
     if (report.subIterations >= kMaxSubIterations)
       throw SolverFailure("no equilibrium after " + std::to_string(kMaxSubIterations) + " sub-iterations");
   }

@@ -25,6 +25,18 @@ struct LoadStepReport {
   std::size_t newlyBroken = 0; // pairs broken at this load
   // Wall time of the phases (profiling only: no decision depends on them, so runs stay reproducible).
   double assemblySeconds = 0, factorizationSeconds = 0, solveSeconds = 0, bondCheckSeconds = 0;
+
+  LoadStepReport& operator+=(const LoadStepReport& o) {
+    subIterations += o.subIterations;
+    factorizations += o.factorizations;
+    krylovIterations += o.krylovIterations;
+    newlyBroken += o.newlyBroken;
+    assemblySeconds += o.assemblySeconds;
+    factorizationSeconds += o.factorizationSeconds;
+    solveSeconds += o.solveSeconds;
+    bondCheckSeconds += o.bondCheckSeconds;
+    return *this;
+  }
 };
 
 class QuasiStaticFracture {
@@ -36,8 +48,9 @@ class QuasiStaticFracture {
 
   LoadStepReport advance(double load);
   // Called after every sub-iteration that broke bonds, with the state consistent (saveState() then
-  // advance() at the same load continues the step exactly): long runs checkpoint from here.
-  void onSubIteration(std::function<void()> hook) { subIterationHook_ = std::move(hook); }
+  // advance() at the same load continues the step exactly) and the step's report so far: long runs
+  // checkpoint from here.
+  void onSubIteration(std::function<void(const LoadStepReport&)> hook) { subIterationHook_ = std::move(hook); }
 
   const LpsDiscretization& discretization() const { return *disc_; }
   const BondState& bonds() const { return bonds_; }
@@ -82,7 +95,7 @@ class QuasiStaticFracture {
   std::vector<double> u_, x_;      // u of all points; last unknown vector (warm start)
   std::vector<std::size_t> brokenByLoading_;
   double load_ = 0;
-  std::function<void()> subIterationHook_;
+  std::function<void(const LoadStepReport&)> subIterationHook_;
 };
 
 }  // namespace peristep
