@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/flush_denormals.hpp"
 #include "models/state_based_kernels.hpp"
 
 namespace peristep {
@@ -34,16 +35,20 @@ StateBasedModel::StateBasedModel(const StateBasedMaterial& material, StateBasedB
 void StateBasedModel::hydrostaticStrain(const double* u, double* theta) const {
   const auto n = static_cast<std::ptrdiff_t>(points());
   const StateBasedBonds& b = bonds_;
-#pragma omp parallel for schedule(static) if (parallel_)
-  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
-    const auto i = static_cast<std::size_t>(ii);
-    const double ux = u[2 * i], uy = u[2 * i + 1];
-    double t = 0;
-    for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) {
-      const std::size_t j = b.neighbour[k];
-      t += b.ws[k] * ((u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k]);
+#pragma omp parallel if (parallel_)
+  {
+    const FlushDenormals flush;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
+      const auto i = static_cast<std::size_t>(ii);
+      const double ux = u[2 * i], uy = u[2 * i + 1];
+      double t = 0;
+      for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) {
+        const std::size_t j = b.neighbour[k];
+        t += b.ws[k] * ((u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k]);
+      }
+      theta[i] = thetaScale_ * t;  // 001:(2): sum of omega_j J S |xi| V_j Vbar_ij/(pi eps^2)
     }
-    theta[i] = thetaScale_ * t;  // 001:(2): sum of omega_j J S |xi| V_j Vbar_ij/(pi eps^2)
   }
 }
 
@@ -66,10 +71,14 @@ void StateBasedModel::force(const double* u, double* f) {
   // Blocks of points: each block is one call into the vectorized kernel.
   constexpr std::size_t block = 64;
   const auto blocks = static_cast<std::ptrdiff_t>((points() + block - 1) / block);
-#pragma omp parallel for schedule(static) if (parallel_)
-  for (std::ptrdiff_t k = 0; k < blocks; ++k) {
-    const std::size_t i0 = static_cast<std::size_t>(k) * block;
-    kernels::stateBasedForce(args, i0, std::min(i0 + block, points()), u, f);
+#pragma omp parallel if (parallel_)
+  {
+    const FlushDenormals flush;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t k = 0; k < blocks; ++k) {
+      const std::size_t i0 = static_cast<std::size_t>(k) * block;
+      kernels::stateBasedForce(args, i0, std::min(i0 + block, points()), u, f);
+    }
   }
 }
 

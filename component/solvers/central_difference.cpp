@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/flush_denormals.hpp"
 #include "core/timer.hpp"
 
 namespace peristep {
@@ -92,6 +93,7 @@ void CentralDifference::setState(double t, const double* u, const double* v, dou
 
 void CentralDifference::advanceTo(double t) {
   require(std::isfinite(t) && t >= t_ - 1e-12 * std::abs(t_), "central_difference: cannot integrate backwards");
+  const FlushDenormals flush;  // this thread; the threads of the force loop take their own
   const Stopwatch clock;
   // Whole steps, the last one landing exactly on t (shortened when t is not a multiple of the step:
   // the kick-drift-kick form allows a change of step).
