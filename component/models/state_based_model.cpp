@@ -84,8 +84,6 @@ void StateBasedModel::force(const double* u, double* f) {
 
 void StateBasedModel::tensileEnergyDensity(const double* u, double* e, PreCrack preCrack) const {
   const StateBasedBonds& b = bonds_;
-  const BondList& cut = b.preCrack;
-  const bool withCut = preCrack == PreCrack::counted;
   const double beta = material_.f.beta, eps = b.horizon;
   // 001:(3), (11): (1/(pi eps^2)) sum |xi| omega_i omega_j J/(eps |xi|) f(r) V_j Vbar_ij.
   const double scale = material_.f.c / (std::numbers::pi * eps * eps * eps);
@@ -100,9 +98,19 @@ void StateBasedModel::tensileEnergyDensity(const double* u, double* e, PreCrack 
       const double r = (u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k];
       s += b.w[k] * -std::expm1(-beta * r * r);  // 1 - exp without cancellation at small strain
     }
-    if (withCut)
-      for (std::size_t k = cut.offset[i]; k < cut.offset[i + 1]; ++k) s += cut.w[k];  // f saturated at c
     e[i] = scale * b.omega[i] * s;
+  }
+  if (preCrack == PreCrack::counted) addPreCrackEnergyDensity(e);
+}
+
+void StateBasedModel::addPreCrackEnergyDensity(double* e) const {
+  const StateBasedBonds& b = bonds_;
+  const BondList& cut = b.preCrack;
+  const double eps = b.horizon, scale = material_.f.c / (std::numbers::pi * eps * eps * eps);
+  for (std::size_t i = 0; i < points(); ++i) {
+    double s = 0;
+    for (std::size_t k = cut.offset[i]; k < cut.offset[i + 1]; ++k) s += cut.w[k];  // f saturated at c
+    e[i] += scale * b.omega[i] * s;
   }
 }
 
@@ -121,25 +129,28 @@ double StateBasedModel::energy(const double* u) {
   return total * bonds_.cellArea;
 }
 
+// Largest r/r* = S/S_c (sqrt|xi| S = r, 001:(6)) over the pairs of point i in list l; 0 without pairs.
+static double maxStretchRatio(const BondList& l, std::size_t i, const double* u, double rstar) {
+  const double ux = u[2 * i], uy = u[2 * i + 1];
+  double r = 0;
+  for (std::size_t k = l.offset[i]; k < l.offset[i + 1]; ++k) {
+    const std::size_t j = l.neighbour[k];
+    r = std::max(r, (u[2 * j] - ux) * l.qx[k] + (u[2 * j + 1] - uy) * l.qy[k]);
+  }
+  return r / rstar;
+}
+
 void StateBasedModel::damage(const double* u, double* Z, PreCrack preCrack) const {
-  const StateBasedBonds& b = bonds_;
-  const bool withCut = preCrack == PreCrack::counted;
   const double rstar = material_.f.inflection();
   const auto n = static_cast<std::ptrdiff_t>(points());
 #pragma omp parallel for schedule(static) if (parallel_)
-  for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
-    const auto i = static_cast<std::size_t>(ii);
-    const double ux = u[2 * i], uy = u[2 * i + 1];
-    const auto maxStretch = [&](const BondList& l) {  // S/S_c = sqrt|xi| S / r* = r/r*
-      double r = 0;
-      for (std::size_t k = l.offset[i]; k < l.offset[i + 1]; ++k) {
-        const std::size_t j = l.neighbour[k];
-        r = std::max(r, (u[2 * j] - ux) * l.qx[k] + (u[2 * j + 1] - uy) * l.qy[k]);
-      }
-      return r / rstar;
-    };
-    Z[i] = withCut ? std::max(maxStretch(b), maxStretch(b.preCrack)) : maxStretch(b);
-  }
+  for (std::ptrdiff_t i = 0; i < n; ++i) Z[i] = maxStretchRatio(bonds_, static_cast<std::size_t>(i), u, rstar);
+  if (preCrack == PreCrack::counted) raiseDamageByPreCrack(u, Z);
+}
+
+void StateBasedModel::raiseDamageByPreCrack(const double* u, double* Z) const {
+  const double rstar = material_.f.inflection();
+  for (std::size_t i = 0; i < points(); ++i) Z[i] = std::max(Z[i], maxStretchRatio(bonds_.preCrack, i, u, rstar));
 }
 
 }  // namespace peristep

@@ -31,6 +31,10 @@ class StateBasedModel final : public ForceModel {
   void hydrostaticStrain(const double* u, double* theta) const;
   // Per point: damage indicator Z = max_y S/S_c, S_c = r*/sqrt(|y - x|), 001:(104); 0 without bonds.
   void damage(const double* u, double* Z, PreCrack preCrack = PreCrack::leftOut) const;
+  // The step from leftOut to counted for values already computed: reads only the pre-crack pairs (a
+  // few per point along the pre-crack), so both readings cost one pass over the bonds.
+  void raiseDamageByPreCrack(const double* u, double* Z) const;
+  void addPreCrackEnergyDensity(double* e) const;
 
   const StateBasedMaterial& material() const { return material_; }
   const StateBasedBonds& bonds() const { return bonds_; }

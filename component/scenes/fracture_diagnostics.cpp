@@ -10,8 +10,8 @@ FractureDiagnostics::FractureDiagnostics(DynamicScene& scene)
     : scene_(scene),
       Z_(scene.cloud.size(), 0.0),
       energyDensity_(scene.cloud.size(), 0.0),
-      scratchZ_(scene.cloud.size(), 0.0),
-      scratchEnergy_(scene.cloud.size(), 0.0) {}
+      ZWithPreCrack_(scene.cloud.size(), 0.0),
+      energyWithPreCrack_(scene.cloud.size(), 0.0) {}
 
 std::vector<double> FractureDiagnostics::crackLengths(const std::vector<double>& Z) const {
   const PointCloud& c = scene_.cloud;
@@ -88,10 +88,12 @@ EnergyRecord FractureDiagnostics::measure(const TimeIntegrator& integrator) {
   crackZone(Z_, energyDensity_, r.fractureEnergy, r.maxDamage);
   for (const double l : crackLengths(Z_)) r.crackLength += l;
 
-  model.damage(u, scratchZ_.data(), PreCrack::counted);
-  model.tensileEnergyDensity(u, scratchEnergy_.data(), PreCrack::counted);
-  crackZone(scratchZ_, scratchEnergy_, r.fractureEnergyWithPreCrack, r.maxDamageWithPreCrack);
-  const std::vector<double> grown = crackLengths(scratchZ_);
+  ZWithPreCrack_ = Z_;
+  energyWithPreCrack_ = energyDensity_;
+  model.raiseDamageByPreCrack(u, ZWithPreCrack_.data());
+  model.addPreCrackEnergyDensity(energyWithPreCrack_.data());
+  crackZone(ZWithPreCrack_, energyWithPreCrack_, r.fractureEnergyWithPreCrack, r.maxDamageWithPreCrack);
+  const std::vector<double> grown = crackLengths(ZWithPreCrack_);
   for (std::size_t k = 0; k < grown.size(); ++k)
     r.crackLengthWithPreCrack += lengthInMaterial(scene_.cracks[k]) + grown[k];
   return r;

@@ -39,7 +39,7 @@ class FractureDiagnostics {
   double lengthInMaterial(const Segment& s) const;
 
   DynamicScene& scene_;
-  std::vector<double> Z_, energyDensity_, scratchZ_, scratchEnergy_;
+  std::vector<double> Z_, energyDensity_, ZWithPreCrack_, energyWithPreCrack_;
 };
 
 }  // namespace peristep
