@@ -4,17 +4,56 @@
 //   001 itself: bending_test 1 0.75 3 0.0035 350 (200k points, 1e5 steps: about an hour here).
 // What it shows: every 10 us the kinetic and elastic energy, the work of the load, their balance,
 // the crack-zone energy P.E. against G_c x crack growth (001 Fig. 10; also with the pre-crack counted,
-// see energy_table.hpp), then wall time.
+// see energy_table.hpp), then wall time, then the shape of each crack at the end time: how far its
+// Z > 1 zone has grown beyond the notch and how wide that band is, row by row (a sharp crack is a
+// band a few h wide).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 #include "energy_table.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
 #include "scenes/bending_test.hpp"
+#include "scenes/crack_zone.hpp"
 #include "scenes/dynamic_run.hpp"
 
 using namespace peristep;
+
+namespace {
+
+// Every 2 mm of advance the band's extent in x (the notches point up, so an offset to the crack's left
+// is -x), then the median and widest band.
+void printCrackBands(DynamicScene& scene, const std::vector<double>& u, double t) {
+  std::vector<double> Z(scene.cloud.size());
+  scene.model->damage(u.data(), Z.data());
+  const double h = scene.h();
+  const auto every = std::max(1L, std::lround(2e-3 / h));
+  const std::vector<std::vector<CrackBandRow>> bands = crackBands(scene, Z);
+  std::printf("crack bands at t = %g us: the Z > 1 zone beyond each notch tip, row by row (h = %g mm, eps = %g mm)\n",
+              t * 1e6, h * 1e3, scene.horizon() * 1e3);
+  for (std::size_t k = 0; k < bands.size(); ++k) {
+    const std::vector<CrackBandRow>& rows = bands[k];
+    const double x = scene.cracks[k].x1;
+    std::printf("notch at x = %.1f mm: %zu rows, grown %.2f mm\n%12s %10s %10s %10s\n", x * 1e3, rows.size(),
+                rows.empty() ? 0.0 : rows.back().advance * 1e3, "advance mm", "x from mm", "x to mm", "width mm");
+    std::vector<double> widths;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const CrackBandRow& r = rows[i];
+      widths.push_back(r.width(h));
+      if ((i + 1) % static_cast<std::size_t>(every) == 0)
+        std::printf("%12.2f %10.2f %10.2f %10.2f\n", r.advance * 1e3, (x - r.right) * 1e3, (x - r.left) * 1e3,
+                    r.width(h) * 1e3);
+    }
+    if (widths.empty()) continue;
+    std::sort(widths.begin(), widths.end());
+    std::printf("band width: median %.2f mm, widest %.2f mm\n", widths[widths.size() / 2] * 1e3, widths.back() * 1e3);
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 6) {
@@ -35,12 +74,17 @@ int main(int argc, char** argv) {
     o.reportInterval = 10e-6;
     const Stopwatch clock;
     DynamicRunResult r;
+    std::vector<double> u;  // at the last report
     {
       bench::EnergyTable table(scene.model->material().fractureEnergy(), argc > 6 ? argv[6] : nullptr);
-      r = runDynamicScene(scene, o, [&](const TimeIntegrator&, const EnergyRecord& e) { table.row(e); });
+      r = runDynamicScene(scene, o, [&](const TimeIntegrator& integrator, const EnergyRecord& e) {
+        u.assign(integrator.displacement(), integrator.displacement() + scene.problem->dofs());
+        table.row(e);
+      });
     }
     std::printf("wall time %.1f s for %ld steps, peak memory %.0f MB\n", clock.seconds(), r.stats.steps,
                 static_cast<double>(peakMemoryBytes()) / 1e6);
+    printCrackBands(scene, u, r.records.back().time);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
+
+#include "scenes/crack_zone.hpp"
 
 namespace peristep {
 
@@ -15,38 +16,12 @@ FractureDiagnostics::FractureDiagnostics(DynamicScene& scene)
 
 std::vector<double> FractureDiagnostics::crackLengths(const std::vector<double>& Z) const {
   const PointCloud& c = scene_.cloud;
-  const std::size_t n = c.size();
-  const double eps = scene_.horizon();
-  std::vector<int> owner(n, -1);
-  std::deque<std::size_t> queue;
-  const auto cracked = [&](std::size_t p) { return scene_.material[p] && Z[p] > 1.0; };
-  for (std::size_t k = 0; k < scene_.cracks.size(); ++k) {
-    const Segment& s = scene_.cracks[k];
-    for (std::size_t p = 0; p < n; ++p)
-      if (owner[p] < 0 && cracked(p) && std::hypot(c.x[p] - s.x1, c.y[p] - s.y1) <= eps) {
-        owner[p] = static_cast<int>(k);
-        queue.push_back(p);
-      }
-  }
-  while (!queue.empty()) {  // multi-source BFS: each Z > 1 point goes to the nearest crack zone
-    const std::size_t p = queue.front();
-    queue.pop_front();
-    for (std::size_t k = scene_.adjacent.begin(p); k < scene_.adjacent.end(p); ++k) {
-      const std::size_t q = scene_.adjacent.index[k];
-      if (owner[q] < 0 && cracked(q)) {
-        owner[q] = owner[p];
-        queue.push_back(q);
-      }
-    }
-  }
+  const std::vector<int> owner = crackZoneOwners(scene_, Z);
   std::vector<double> lengths(scene_.cracks.size(), 0.0);
-  for (std::size_t p = 0; p < n; ++p) {
+  for (std::size_t p = 0; p < c.size(); ++p) {
     if (owner[p] < 0) continue;
-    const Segment& s = scene_.cracks[static_cast<std::size_t>(owner[p])];
-    const double L = std::hypot(s.x1 - s.x0, s.y1 - s.y0);
-    const double advance = ((c.x[p] - s.x1) * (s.x1 - s.x0) + (c.y[p] - s.y1) * (s.y1 - s.y0)) / L;
     double& l = lengths[static_cast<std::size_t>(owner[p])];
-    l = std::max(l, advance);
+    l = std::max(l, crackCoordinates(scene_.cracks[static_cast<std::size_t>(owner[p])], c.x[p], c.y[p]).advance);
   }
   return lengths;
 }

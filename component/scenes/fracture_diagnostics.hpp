@@ -32,9 +32,8 @@ class FractureDiagnostics {
   const std::vector<double>& damage() const { return Z_; }  // Z of the last measure()
 
  private:
-  // Crack growth: the points of D with Z > 1 (Z given) are split among the pre-cracks by a breadth-first search
-  // over lattice neighbours started from those within eps of each crack tip; the length of crack c is
-  // the largest advance (x - tip) . direction over its points.
+  // Crack growth: the length of crack c is the largest advance (x - tip) . direction over the points of its
+  // zone (crackZoneOwners, Z given).
   std::vector<double> crackLengths(const std::vector<double>& Z) const;
   double lengthInMaterial(const Segment& s) const;
 
