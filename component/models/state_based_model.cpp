@@ -21,6 +21,7 @@ StateBasedModel::StateBasedModel(const StateBasedMaterial& material, StateBasedB
   hydrostatic_ = material_.g.active();
   parallel_ = bonds_.bonds() >= 100000;
   tensileScale_ = 4.0 * material_.f.c * material_.f.beta / (pi * eps * eps * eps);
+  energyScale_ = material_.f.c / (pi * eps * eps * eps);
   hydroScale_ = 1.0 / (pi * eps * eps * eps * eps);
   thetaScale_ = 1.0 / (pi * eps * eps);
   if (hydrostatic_) {
@@ -30,6 +31,12 @@ StateBasedModel::StateBasedModel(const StateBasedMaterial& material, StateBasedB
     dkg1_.assign(points(), 0.0);
   }
   energyDensity_.assign(points(), 0.0);
+}
+
+// r = sqrt|xi| S of pair k of point i (001:(6)): (u_j - u_i) . q with q = e/sqrt|xi| precomputed.
+static inline double pairStretch(const BondList& l, std::size_t k, const double* u, double ux, double uy) {
+  const std::size_t j = l.neighbour[k];
+  return (u[2 * j] - ux) * l.qx[k] + (u[2 * j + 1] - uy) * l.qy[k];
 }
 
 void StateBasedModel::hydrostaticStrain(const double* u, double* theta) const {
@@ -43,10 +50,7 @@ void StateBasedModel::hydrostaticStrain(const double* u, double* theta) const {
       const auto i = static_cast<std::size_t>(ii);
       const double ux = u[2 * i], uy = u[2 * i + 1];
       double t = 0;
-      for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) {
-        const std::size_t j = b.neighbour[k];
-        t += b.ws[k] * ((u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k]);
-      }
+      for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) t += b.ws[k] * pairStretch(b, k, u, ux, uy);
       theta[i] = thetaScale_ * t;  // 001:(2): sum of omega_j J S |xi| V_j Vbar_ij/(pi eps^2)
     }
   }
@@ -84,9 +88,8 @@ void StateBasedModel::force(const double* u, double* f) {
 
 void StateBasedModel::tensileEnergyDensity(const double* u, double* e, PreCrack preCrack) const {
   const StateBasedBonds& b = bonds_;
-  const double beta = material_.f.beta, eps = b.horizon;
+  const double beta = material_.f.beta;
   // 001:(3), (11): (1/(pi eps^2)) sum |xi| omega_i omega_j J/(eps |xi|) f(r) V_j Vbar_ij.
-  const double scale = material_.f.c / (std::numbers::pi * eps * eps * eps);
   const auto n = static_cast<std::ptrdiff_t>(points());
 #pragma omp parallel for schedule(static) if (parallel_)
   for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
@@ -94,11 +97,10 @@ void StateBasedModel::tensileEnergyDensity(const double* u, double* e, PreCrack 
     const double ux = u[2 * i], uy = u[2 * i + 1];
     double s = 0;
     for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) {
-      const std::size_t j = b.neighbour[k];
-      const double r = (u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k];
+      const double r = pairStretch(b, k, u, ux, uy);
       s += b.w[k] * -std::expm1(-beta * r * r);  // 1 - exp without cancellation at small strain
     }
-    e[i] = scale * b.omega[i] * s;
+    e[i] = energyScale_ * b.omega[i] * s;
   }
   if (preCrack == PreCrack::counted) addPreCrackEnergyDensity(e);
 }
@@ -106,11 +108,10 @@ void StateBasedModel::tensileEnergyDensity(const double* u, double* e, PreCrack 
 void StateBasedModel::addPreCrackEnergyDensity(double* e) const {
   const StateBasedBonds& b = bonds_;
   const BondList& cut = b.preCrack;
-  const double eps = b.horizon, scale = material_.f.c / (std::numbers::pi * eps * eps * eps);
   for (std::size_t i = 0; i < points(); ++i) {
     double s = 0;
     for (std::size_t k = cut.offset[i]; k < cut.offset[i + 1]; ++k) s += cut.w[k];  // f saturated at c
-    e[i] += scale * b.omega[i] * s;
+    e[i] += energyScale_ * b.omega[i] * s;
   }
 }
 
@@ -133,10 +134,7 @@ double StateBasedModel::energy(const double* u) {
 static double maxStretchRatio(const BondList& l, std::size_t i, const double* u, double rstar) {
   const double ux = u[2 * i], uy = u[2 * i + 1];
   double r = 0;
-  for (std::size_t k = l.offset[i]; k < l.offset[i + 1]; ++k) {
-    const std::size_t j = l.neighbour[k];
-    r = std::max(r, (u[2 * j] - ux) * l.qx[k] + (u[2 * j + 1] - uy) * l.qy[k]);
-  }
+  for (std::size_t k = l.offset[i]; k < l.offset[i + 1]; ++k) r = std::max(r, pairStretch(l, k, u, ux, uy));
   return r / rstar;
 }
 

@@ -49,6 +49,7 @@ class StateBasedModel final : public ForceModel {
   // work (and much more when the machine is shared and a thread is descheduled at the barrier).
   bool parallel_ = false;
   double tensileScale_ = 0;   // 4 c beta/(pi eps^3): 001:(14) with f'(r) = 2 c beta r exp(-beta r^2)
+  double energyScale_ = 0;    // c/(pi eps^3): 001:(3), (11)
   double hydroScale_ = 0;     // 1/(pi eps^4): 001:(15)
   double thetaScale_ = 0;     // 1/(pi eps^2): 001:(2)
   std::vector<double> theta_, kg1_, dtheta_, dkg1_, energyDensity_;  // scratch, sized once
