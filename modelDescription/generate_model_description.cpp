@@ -11,6 +11,7 @@
 
 #include "fmi/log_categories.hpp"
 #include "fmi/variables.hpp"
+#include "model_summary.hpp"
 #include "peristep.h"
 
 using namespace peristep::fmi;
@@ -44,12 +45,6 @@ class Writer {
   }
   xmlTextWriterPtr w_;
 };
-
-std::string number(double x) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
 
 std::uint64_t startOf(fmi3ValueReference structural) {
   const Variable& v = *findVariable(structural);
@@ -100,9 +95,7 @@ void writeModelDescription(const char* path) {
   w.attribute("fmiVersion", "3.0");
   w.attribute("modelName", "PeriStep");
   w.attribute("instantiationToken", PERISTEP_INSTANTIATION_TOKEN);
-  w.attribute("description",
-              "Peridynamic (linear peridynamic solid) solver for randomly heterogeneous materials: quasi-static "
-              "scenes driven by a load factor");
+  w.attribute("description", kModelSummary);
   w.attribute("version", PERISTEP_VERSION);
   w.attribute("generationTool", "PeriStep generate_model_description");
   w.attribute("variableNamingConvention", "flat");
@@ -120,11 +113,13 @@ void writeModelDescription(const char* path) {
   for (const UnitDefinition& u : unitDefinitions()) {
     w.start("Unit");
     w.attribute("name", u.name);
-    w.start("BaseUnit");
-    if (u.kg) w.attribute("kg", std::to_string(u.kg));
-    if (u.m) w.attribute("m", std::to_string(u.m));
-    if (u.s) w.attribute("s", std::to_string(u.s));
-    w.end();
+    if (u.integerPowers) {
+      w.start("BaseUnit");
+      if (u.kg) w.attribute("kg", std::to_string(u.kg));
+      if (u.m) w.attribute("m", std::to_string(u.m));
+      if (u.s) w.attribute("s", std::to_string(u.s));
+      w.end();
+    }
     w.end();
   }
   w.end();
@@ -155,24 +150,31 @@ void writeModelDescription(const char* path) {
   w.end();
 
   w.start("DefaultExperiment");
-  w.attribute("startTime", "0");
-  w.attribute("stopTime", "1");
-  w.attribute("stepSize", "0.25");
+  w.attribute("startTime", number(kDefaultExperiment.startTime));
+  w.attribute("stopTime", number(kDefaultExperiment.stopTime));
+  w.attribute("stepSize", number(kDefaultExperiment.stepSize));
   w.end();
 
   w.start("ModelVariables");
   for (const Variable& v : variables()) writeVariable(w, v);
   w.end();
 
-  // Outputs depend directly on the input (each step is a quasi-static solve at its value);
-  // initial unknowns are the outputs and calculated parameters (FMI 3.0 Sec. 2.4.8).
+  // Outputs depend on the inputs the table names (the scene's solve or integration at their values);
+  // initial unknowns are the outputs and calculated parameters (FMI 3.0.2 Sec. 2.4.8).
   w.start("ModelStructure");
   for (const Variable& v : variables())
     if (v.causality == Causality::Output) {
       w.start("Output");
       w.attribute("valueReference", std::to_string(v.vr));
-      w.attribute("dependencies", std::to_string(PERISTEP_VR_LOAD_FACTOR));
-      w.attribute("dependenciesKind", "dependent");
+      if (v.dependencies) {  // unset: the attribute is omitted (the output depends on every known)
+        std::string refs, kinds;
+        for (fmi3ValueReference d : *v.dependencies) {
+          refs.append(refs.empty() ? "" : " ").append(std::to_string(d));
+          kinds += kinds.empty() ? "dependent" : " dependent";
+        }
+        w.attribute("dependencies", refs);
+        w.attribute("dependenciesKind", kinds);
+      }
       w.end();
     }
   for (const Variable& v : variables())

@@ -229,8 +229,6 @@ class Checker {
         if (attrOr(d, "inverse") == "true" && numberOf(attrOr(d, "offset", "0")).value_or(1) != 0)
           fail("display unit inverse (Sec. 2.4.3)", name + ": inverse with an offset");
       }
-      // PeriStep rule: every unit is defined in SI base units, so that an importer can check connections.
-      if (!firstChild(u, "BaseUnit")) fail("units in base units (PeriStep rule)", name + " has no <BaseUnit>");
     }
   }
 

@@ -139,7 +139,18 @@ TEST_CASE("the variables of the table and of modelDescription.xml are the same",
   // Every output is an <Output>; outputs and calculated parameters are the initial unknowns.
   xmlNodePtr structure = child(doc.root(), "ModelStructure");
   std::set<fmi3ValueReference> outputs, initial, expectOutputs, expectInitial;
-  for (xmlNodePtr o : children(structure, "Output")) outputs.insert(std::stoul(attribute(o, "valueReference")));
+  for (xmlNodePtr o : children(structure, "Output")) {
+    const Variable* v = findVariable(std::stoul(attribute(o, "valueReference")));
+    REQUIRE(v != nullptr);
+    outputs.insert(v->vr);
+    // <Output dependencies> are the table's (absent where the table leaves them unset).
+    INFO(label(*v));
+    std::string deps;
+    for (fmi3ValueReference d : v->dependencies.value_or(std::vector<fmi3ValueReference>{}))
+      deps.append(deps.empty() ? "" : " ").append(std::to_string(d));
+    CHECK((xmlHasProp(o, BAD_CAST "dependencies") != nullptr) == v->dependencies.has_value());
+    CHECK(attribute(o, "dependencies") == deps);
+  }
   for (xmlNodePtr o : children(structure, "InitialUnknown")) initial.insert(std::stoul(attribute(o, "valueReference")));
   for (const Variable& v : variables()) {
     if (v.causality == Causality::Output) expectOutputs.insert(v.vr);

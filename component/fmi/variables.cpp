@@ -18,6 +18,13 @@ constexpr fmi3ValueReference kNx = PERISTEP_VR_NX, kNy = PERISTEP_VR_NY, kModes 
 // Images are [ny][nx]: the outer dimension is ny (FMI arrays are row-major).
 std::vector<fmi3ValueReference> image() { return {kNy, kNx}; }
 
+// Which input drives an output (component/scenes/*_runner.cpp): loadFactor the elastic scenes, the KL
+// plate and the dynamic scenes 5-7; loadDisplacement the glass-ceramic plate.
+std::vector<fmi3ValueReference> onBothLoads() { return {PERISTEP_VR_LOAD_FACTOR, PERISTEP_VR_LOAD_DISPLACEMENT}; }
+std::vector<fmi3ValueReference> onLoadFactor() { return {PERISTEP_VR_LOAD_FACTOR}; }
+std::vector<fmi3ValueReference> onLoadDisplacement() { return {PERISTEP_VR_LOAD_DISPLACEMENT}; }
+std::vector<fmi3ValueReference> onNoInput() { return {}; }  // fixed once the scene is built
+
 std::vector<Variable> makeTable() {
   return {
       {.name = "time", .vr = PERISTEP_VR_TIME, .type = T::Float64, .causality = C::Independent,
@@ -126,81 +133,87 @@ std::vector<Variable> makeTable() {
 
       {.name = "ux", .vr = PERISTEP_VR_UX, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated, .description = "Displacement in x of each domain point",
-       .unit = "m", .dimensions = image()},
+       .unit = "m", .dimensions = image(), .dependencies = onBothLoads()},
       {.name = "uy", .vr = PERISTEP_VR_UY, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated, .description = "Displacement in y of each domain point",
-       .unit = "m", .dimensions = image()},
+       .unit = "m", .dimensions = image(), .dependencies = onBothLoads()},
       {.name = "damage", .vr = PERISTEP_VR_DAMAGE, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Damage of each domain point, 000:(3.23): broken fraction of its material bonds; 0 where "
                       "nothing can break. Dynamic scenes: the indicator Z of 001:(104), cracked where Z > 1",
-       .dimensions = image()},
+       .dimensions = image(), .dependencies = onBothLoads()},
       {.name = "youngsModulus", .vr = PERISTEP_VR_YOUNGS_MODULUS, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Young's modulus of each domain point (the material field, e.g. the microstructure)",
-       .unit = "Pa", .dimensions = image()},
+       .unit = "Pa", .dimensions = image(), .dependencies = onNoInput()},
       {.name = "exactMeanUx", .vr = PERISTEP_VR_EXACT_MEAN_UX, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Mean over the random coordinates of the exact ux (Tests 1-3; see hasExactMoments)",
-       .unit = "m", .dimensions = image()},
+       .unit = "m", .dimensions = image(), .dependencies = onLoadFactor()},
       {.name = "exactMeanUy", .vr = PERISTEP_VR_EXACT_MEAN_UY, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Mean over the random coordinates of the exact uy", .unit = "m", .dimensions = image()},
+       .description = "Mean over the random coordinates of the exact uy", .unit = "m", .dimensions = image(),
+       .dependencies = onLoadFactor()},
       {.name = "exactStdUx", .vr = PERISTEP_VR_EXACT_STD_UX, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Standard deviation over the random coordinates of the exact ux", .unit = "m",
-       .dimensions = image()},
+       .dimensions = image(), .dependencies = onLoadFactor()},
       {.name = "exactStdUy", .vr = PERISTEP_VR_EXACT_STD_UY, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Standard deviation over the random coordinates of the exact uy", .unit = "m",
-       .dimensions = image()},
+       .dimensions = image(), .dependencies = onLoadFactor()},
       {.name = "hasExactMoments", .vr = PERISTEP_VR_HAS_EXACT_MOMENTS, .type = T::Int32, .causality = C::Output,
-       .variability = V::Continuous, .initial = I::Calculated,
-       .description = "1 when exactMean*/exactStd* hold the scene's exact moments (Tests 1-3), 0 when they are zero"},
+       .variability = V::Discrete, .initial = I::Calculated,
+       .description = "1 when exactMean*/exactStd* hold the scene's exact moments (Tests 1-3), 0 when they are zero",
+       .dependencies = onNoInput()},
       {.name = "retainedVariance", .vr = PERISTEP_VR_RETAINED_VARIANCE, .type = T::Float64,
        .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Fraction of the random field's variance carried by the retained KL or PCA modes; 1 otherwise"},
+       .description = "Fraction of the random field's variance carried by the retained KL or PCA modes; 1 otherwise",
+       .dependencies = onNoInput()},
       {.name = "reactionForce", .vr = PERISTEP_VR_REACTION_FORCE, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Force per unit thickness of the top collar on the specimen (glass-ceramic); 0 where the "
                       "scene defines none",
-       .unit = "N/m"},
+       .unit = "N/m", .dependencies = onLoadDisplacement()},
       {.name = "crackLength", .vr = PERISTEP_VR_CRACK_LENGTH, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Crack length grown by loading, from broken bonds (glass-ceramic) or from the advance of "
                       "the Z > 1 zone beyond each pre-crack tip (dynamic scenes); 0 otherwise",
-       .unit = "m"},
+       .unit = "m", .dependencies = onBothLoads()},
       {.name = "brokenBonds", .vr = PERISTEP_VR_BROKEN_BONDS, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Number of broken material bonds, pre-crack included; 0 where nothing can break"},
+       .description = "Number of broken material bonds, pre-crack included; 0 where nothing can break",
+       .dependencies = onLoadDisplacement()},
       {.name = "strainEnergy", .vr = PERISTEP_VR_STRAIN_ENERGY, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Elastic energy per unit thickness, 001:(11) (dynamic scenes); 0 in the other scenes",
-       .unit = "J/m"},
+       .unit = "J/m", .dependencies = onLoadFactor()},
       {.name = "fractureEnergy", .vr = PERISTEP_VR_FRACTURE_ENERGY, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Fracture energy G1 L1 + G2 L2 + Gi Li per unit thickness (glass-ceramic, 000:(5.2)); "
                       "dynamic scenes: peridynamic energy of the crack zone Z > 1 (001 Sec. 6.1.1); 0 otherwise",
-       .unit = "J/m"},
+       .unit = "J/m", .dependencies = onBothLoads()},
       {.name = "toughnessKIC", .vr = PERISTEP_VR_TOUGHNESS_KIC, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Fracture toughness K_IC in Pa m^0.5 from 000:(5.2)-(5.3) (glass-ceramic); 0 otherwise"},
+       .description = "Fracture toughness K_IC from 000:(5.2)-(5.3) (glass-ceramic); 0 otherwise", .unit = "Pa.m^0.5",
+       .dependencies = onLoadDisplacement()},
       {.name = "errorL2", .vr = PERISTEP_VR_ERROR_L2, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "L2 error of the displacement against the scene's exact solution; 0 without one",
-       .unit = "m"},
+       .unit = "m", .dependencies = onLoadFactor()},
       {.name = "kineticEnergy", .vr = PERISTEP_VR_KINETIC_ENERGY, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Kinetic energy per unit thickness (dynamic scenes); 0 otherwise", .unit = "J/m"},
+       .description = "Kinetic energy per unit thickness (dynamic scenes); 0 otherwise", .unit = "J/m",
+       .dependencies = onLoadFactor()},
       {.name = "externalWork", .vr = PERISTEP_VR_EXTERNAL_WORK, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Work per unit thickness of the loads since the start (dynamic scenes): kineticEnergy + "
                       "strainEnergy - externalWork stays at its initial value",
-       .unit = "J/m"},
+       .unit = "J/m", .dependencies = onLoadFactor()},
       {.name = "forceEvaluations", .vr = PERISTEP_VR_FORCE_EVALUATIONS, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Force evaluations (and Jacobian products) the time integrator of this instance has spent; "
-                      "not rewound by fmi3SetFMUState"},
+                      "not rewound by fmi3SetFMUState", .dependencies = onLoadFactor()},
       {.name = "timeIntegrator", .vr = PERISTEP_VR_TIME_INTEGRATOR, .type = T::Enumeration,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Dynamic scenes: time integrator; fmi3DoStep takes as many internal steps as it needs",
@@ -234,22 +247,31 @@ const std::vector<EnumerationType>& enumerationTypes() {
   static const std::vector<EnumerationType> types{
       {"PeriStep.Scene",
        "Built-in scenes",
-       {{"smooth", PERISTEP_SCENE_SMOOTH, "Smooth manufactured solution, one random coordinate (Fan et al., Test 1)"},
+       {{"smooth", PERISTEP_SCENE_SMOOTH,
+         "Smooth manufactured solution, one random coordinate (Fan et al., Test 1); quasi-static: the "
+         "DefaultExperiment fits"},
         {"composite", PERISTEP_SCENE_COMPOSITE,
-         "Bimaterial composite, two random coordinates (Fan et al., Test 2)"},
+         "Bimaterial composite, two random coordinates (Fan et al., Test 2); quasi-static: the "
+         "DefaultExperiment fits"},
         {"interfaceCrack", PERISTEP_SCENE_INTERFACE_CRACK,
-         "Crack on a bimaterial interface, two random coordinates (Fan et al., Test 3)"},
+         "Crack on a bimaterial interface, two random coordinates (Fan et al., Test 3); quasi-static: the "
+         "DefaultExperiment fits"},
         {"glassCeramic", PERISTEP_SCENE_GLASS_CERAMIC,
          "Pre-cracked glass-ceramic plate opened by loadDisplacement; microstructure from seed or its PCA field "
-         "(Fan et al., Sec. 5)"},
+         "(Fan et al., Sec. 5); quasi-static, any step size: the paper's plate is Lx = 800e-6 m, Ly = 400e-6 m "
+         "(e.g. nx = 51, ny = 26), opened in increments of 4e-9 m, one per step"},
         {"plexiglassCrack", PERISTEP_SCENE_PLEXIGLASS_CRACK,
-         "Dynamic crack in a pre-cracked Plexiglass square, bottom strips pulled apart (Jha-Lipton, Sec. 6.1)"},
+         "Dynamic crack in a pre-cracked Plexiglass square, bottom strips pulled apart (Jha-Lipton, Sec. 6.1); "
+         "communication step 2e-6 s, stop time 34e-6 s (500 internal steps of 0.004 us per step)"},
         {"bendingOneNotch", PERISTEP_SCENE_BENDING_ONE_NOTCH,
-         "Dynamic three-point bending of a beam with one pre-crack (Jha-Lipton, Sec. 6.2)"},
+         "Dynamic three-point bending of a beam with one pre-crack (Jha-Lipton, Sec. 6.2); communication step "
+         "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
         {"bendingTwoNotches", PERISTEP_SCENE_BENDING_TWO_NOTCHES,
-         "Dynamic three-point bending of a beam with two pre-cracks (Jha-Lipton, Sec. 6.2)"},
+         "Dynamic three-point bending of a beam with two pre-cracks (Jha-Lipton, Sec. 6.2); communication step "
+         "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
         {"klPlate", PERISTEP_SCENE_KL_PLATE,
-         "Plate with a Karhunen-Loeve random Young's modulus (nModes coordinates), stretched by loadFactor"}}},
+         "Plate with a Karhunen-Loeve random Young's modulus (nModes coordinates), stretched by loadFactor; "
+         "quasi-static: the DefaultExperiment fits"}}},
       {"PeriStep.LinearSolver",
        "Sparse solvers of the (u, theta) system",
        {{"umfpack", PERISTEP_LINEAR_SOLVER_UMFPACK, "UMFPACK, 64-bit indices, METIS ordering"},
@@ -281,11 +303,12 @@ const EnumerationType* findEnumeration(std::string_view name) {
 }
 
 const std::vector<UnitDefinition>& unitDefinitions() {
-  // N/m = kg s^-2 and J/m = kg m s^-2 (per unit thickness of the plane-strain body).
+  // N/m = kg s^-2 and J/m = kg m s^-2 (per unit thickness of the plane-strain body); K_IC's Pa m^(1/2) =
+  // kg m^(-1/2) s^-2 has no integer powers.
   static const std::vector<UnitDefinition> units{
       {.name = "s", .s = 1}, {.name = "m", .m = 1}, {.name = "N/m", .kg = 1, .s = -2},
       {.name = "Pa", .kg = 1, .m = -1, .s = -2},
-      {.name = "J/m", .kg = 1, .m = 1, .s = -2}};
+      {.name = "J/m", .kg = 1, .m = 1, .s = -2}, {.name = "Pa.m^0.5", .integerPowers = false}};
   return units;
 }
 
@@ -311,7 +334,14 @@ std::string_view causalityName(Causality c) {
   return "?";
 }
 
-std::string_view variabilityName(Variability v) { return v == Variability::Fixed ? "fixed" : "continuous"; }
+std::string_view variabilityName(Variability v) {
+  switch (v) {
+    case Variability::Fixed: return "fixed";
+    case Variability::Discrete: return "discrete";
+    case Variability::Continuous: return "continuous";
+  }
+  return "?";
+}
 
 std::string label(const Variable& v) { return std::string(v.name) + " (vr " + std::to_string(v.vr) + ")"; }
 

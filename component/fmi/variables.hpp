@@ -16,7 +16,8 @@ namespace peristep::fmi {
 // Enumeration variables are read and written with fmi3GetInt64/fmi3SetInt64 (FMI 3.0 Sec. 2.4.7.5).
 enum class VarType { Float64, Int32, UInt64, Enumeration };
 enum class Causality { Independent, StructuralParameter, Parameter, CalculatedParameter, Input, Output };
-enum class Variability { Fixed, Continuous };
+// Continuous only for Float64 (FMI 3.0.2 Sec. 2.4.7.4); outputs of other types are Discrete.
+enum class Variability { Fixed, Discrete, Continuous };
 // Default: the attribute is omitted (inputs and the independent variable may not carry it).
 enum class Initial { Default, Exact, Calculated };
 
@@ -40,6 +41,9 @@ struct Variable {
   std::vector<fmi3ValueReference> dimensions = {};  // structural parameters, outermost first
   std::optional<Bound> min = {};
   std::optional<Bound> max = {};
+  // Outputs: the inputs the output depends on at a communication point (<Output dependencies>, FMI 3.0.2
+  // Sec. 2.4.8); empty: none; unset: the attribute is omitted, meaning every known.
+  std::optional<std::vector<fmi3ValueReference>> dependencies = {};
 };
 
 // Every variable, in the order of <ModelVariables> (structural parameters before the arrays they size).
@@ -64,6 +68,8 @@ const EnumerationType* findEnumeration(std::string_view name);
 struct UnitDefinition {
   std::string_view name;
   int kg = 0, m = 0, s = 0;
+  // <BaseUnit> exponents are integers: a unit with a half power (K_IC's m^(1/2)) is declared without one.
+  bool integerPowers = true;
 };
 const std::vector<UnitDefinition>& unitDefinitions();
 

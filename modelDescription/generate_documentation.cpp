@@ -1,0 +1,172 @@
+// Writes the FMU's documentation/index.html from the component's variable table, its enumerations,
+// units and log categories: the same sources as modelDescription.xml, so the page cannot drift from it.
+// Everything an importer needs is on the page itself (value references, enumeration values), because the
+// FMU archive holds no header.
+//
+//   generate_documentation <index.html>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "fmi/log_categories.hpp"
+#include "fmi/variables.hpp"
+#include "model_summary.hpp"
+#include "peristep.h"
+
+using namespace peristep::fmi;
+
+namespace {
+
+std::string escaped(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string code(std::string_view text) { return "<code>" + escaped(text) + "</code>"; }
+
+std::string cell(const std::string& html) { return "<td>" + html + "</td>"; }
+
+// "[1, 20]", "(0, inf)": the admissible interval, open ends in round brackets.
+std::string range(const Variable& v) {
+  if (!v.min && !v.max) return "";
+  std::string r;
+  if (v.min) r.append(v.min->open ? "(" : "[").append(number(v.min->value));
+  else r.append("(-inf");
+  r.append(", ");
+  if (v.max) r.append(number(v.max->value)).append(v.max->open ? ")" : "]");
+  else r.append("inf)");
+  return r;
+}
+
+std::string dimensions(const Variable& v) {
+  std::string d;
+  for (fmi3ValueReference s : v.dimensions) d.append("[").append(findVariable(s)->name).append("]");
+  return d;
+}
+
+std::string unit(const UnitDefinition& u) {
+  if (!u.integerPowers) return "no SI base-unit form with integer powers";
+  std::string s;
+  const auto power = [&s](const char* base, int p) {
+    if (!p) return;
+    if (!s.empty()) s += ' ';
+    s += base;
+    if (p != 1) s += '^' + std::to_string(p);
+  };
+  power("kg", u.kg);
+  power("m", u.m);
+  power("s", u.s);
+  return s;
+}
+
+void writeVariables(std::ostream& out) {
+  out << "<h2 id=\"variables\">Variables</h2>\n"
+         "<p>Arrays are <code>[ny][nx]</code> images with x varying fastest, or vectors of length "
+         "<code>nModes</code>; an array's start value holds for every element. Enumerations are read and "
+         "written with <code>fmi3GetInt64</code>/<code>fmi3SetInt64</code>.</p>\n"
+         "<table>\n<tr><th>Name</th><th>Value reference</th><th>Type</th><th>Causality</th><th>Variability</th>"
+         "<th>Unit</th><th>Dimensions</th><th>Start</th><th>Range</th><th>Description</th></tr>\n";
+  for (const Variable& v : variables()) {
+    const std::string type = v.declaredType.empty() ? std::string(typeName(v.type))
+                                                    : std::string(typeName(v.type)) + " " + code(v.declaredType);
+    out << "<tr id=\"var-" << escaped(v.name) << "\">" << cell(code(v.name)) << cell(std::to_string(v.vr))
+        << cell(type) << cell(std::string(causalityName(v.causality)))
+        << cell(std::string(variabilityName(v.variability))) << cell(escaped(v.unit)) << cell(escaped(dimensions(v)))
+        << cell(escaped(v.start)) << cell(range(v)) << cell(escaped(v.description)) << "</tr>\n";
+  }
+  out << "</table>\n";
+}
+
+void writeEnumerations(std::ostream& out) {
+  out << "<h2 id=\"enumerations\">Enumerations</h2>\n";
+  for (const EnumerationType& e : enumerationTypes()) {
+    out << "<h3>" << code(e.name) << "</h3>\n<p>" << escaped(e.description)
+        << "</p>\n<table>\n<tr><th>Item</th><th>Value</th><th>Description</th></tr>\n";
+    for (const EnumerationItem& item : e.items)
+      out << "<tr>" << cell(code(item.name)) << cell(std::to_string(item.value)) << cell(escaped(item.description))
+          << "</tr>\n";
+    out << "</table>\n";
+  }
+}
+
+void writePage(const char* path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(std::string("cannot open ") + path);
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>PeriStep FMU</title>\n"
+         "<style>table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 6px;"
+         "vertical-align:top}</style>\n</head>\n<body>\n<h1>PeriStep "
+      << PERISTEP_VERSION << "</h1>\n<p>" << escaped(kModelSummary)
+      << ".</p>\n<p>An FMI 3.0 Co-Simulation FMU for x86_64 Linux (model identifier <code>"
+      << PERISTEP_MODEL_IDENTIFIER << "</code>, instantiation token <code>" << PERISTEP_INSTANTIATION_TOKEN
+      << "</code>). This page is generated from the variable table that modelDescription.xml is generated from."
+         "</p>\n\n"
+         "<h2>How to run it</h2>\n<ol>\n"
+         "<li>Optionally enter Configuration Mode and set the structural parameters <code>nx</code>, "
+         "<code>ny</code> (points per side) and <code>nModes</code> (length of <code>xi</code>).</li>\n"
+         "<li>Set the parameters (<code>scene</code>, <code>Lx</code>, <code>Ly</code>, <code>deltaOverH</code>, "
+         "<code>poissonRatio</code>, <code>xi</code>, ...) in Instantiated or Initialization Mode. The quasi-static "
+         "scenes need a uniform spacing <code>Lx/(nx-1) = Ly/(ny-1)</code>.</li>\n"
+         "<li><code>fmi3ExitInitializationMode</code> builds the scene and computes the outputs at the current "
+         "inputs.</li>\n"
+         "<li>Each <code>fmi3DoStep</code> of a quasi-static scene is one load increment: it solves at the current "
+         "<code>loadFactor</code> (or, for <code>glassCeramic</code>, <code>loadDisplacement</code>) whatever the "
+         "step size. Each <code>fmi3DoStep</code> of a dynamic scene integrates the equation of motion over the "
+         "communication step, in internal steps of <code>internalTimeStep</code>.</li>\n</ol>\n\n"
+         "<h2 id=\"experiments\">Step size and stop time of each scene</h2>\n"
+         "<p>The default experiment (start "
+      << number(kDefaultExperiment.startTime) << " s, stop " << number(kDefaultExperiment.stopTime)
+      << " s, step " << number(kDefaultExperiment.stepSize)
+      << " s) fits the quasi-static scenes. The dynamic scenes need communication steps of microseconds: with "
+         "the default step an <code>fmi3DoStep</code> of <code>plexiglassCrack</code> would take "
+      << std::llround(kDefaultExperiment.stepSize / 4e-9)  // the Plexiglass step of 001
+      << " internal steps. Each scene's recommended step and stop time:</p>\n<table>\n"
+         "<tr><th>scene</th><th>Value</th><th>Description, step size and stop time</th></tr>\n";
+  for (const EnumerationItem& s : findEnumeration("PeriStep.Scene")->items)
+    out << "<tr>" << cell(code(s.name)) << cell(std::to_string(s.value)) << cell(escaped(s.description)) << "</tr>\n";
+  out << "</table>\n\n";
+  writeVariables(out);
+  writeEnumerations(out);
+  out << "<h2>Units</h2>\n<table>\n<tr><th>Unit</th><th>SI base units</th></tr>\n";
+  for (const UnitDefinition& u : unitDefinitions()) out << "<tr>" << cell(code(u.name)) << cell(unit(u)) << "</tr>\n";
+  out << "</table>\n<h2>Log categories</h2>\n<table>\n<tr><th>Category</th><th>Description</th></tr>\n";
+  for (const LogCategoryInfo& c : kLogCategories)
+    out << "<tr>" << cell(code(c.name)) << cell(escaped(c.description)) << "</tr>\n";
+  out << "</table>\n\n"
+         "<h2>Behaviour worth knowing</h2>\n<ul>\n"
+         "<li>Any call that returns <code>fmi3Error</code> logs one message in category <code>logStatusError</code> "
+         "and leaves the instance in Terminated, as FMI 3.0 requires: restore an FMU state or call "
+         "<code>fmi3Reset</code> to continue.</li>\n"
+         "<li>In Step Mode, values may not be read after a value was set until the next "
+         "<code>fmi3DoStep</code>.</li>\n"
+         "<li>FMU states can be saved, restored and serialized.</li>\n"
+         "<li>A scalar output that a scene does not define reads 0; each output's description names the scenes "
+         "that compute it.</li>\n</ul>\n</body>\n</html>\n";
+  if (!out) throw std::runtime_error(std::string("cannot write ") + path);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: %s <index.html>\n", argv[0]);
+    return 2;
+  }
+  try {
+    writePage(argv[1]);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", argv[0], e.what());
+    return 1;
+  }
+  return 0;
+}
