@@ -1,4 +1,7 @@
-/* How to run:   embed <path to PeriStep.so>
+/* How to build: from the repository root, after `cmake --build build` (a CTest runs these two lines):
+ *   cc -std=c99 -Wall -Wextra -Iapi examples/c/embed.c -o embed -ldl -lm
+ *   ./embed build/component/fmi/PeriStep.so
+ * How to run:   embed <path to PeriStep.so>
  *               e.g. build/component/fmi/PeriStep.so, or binaries/x86_64-linux/PeriStep.so inside an
  *               unpacked PeriStep.fmu (it is a zip archive).
  * What it shows: the life of one PeriStep instance through the plain FMI 3.0 C ABI, without any

@@ -1,0 +1,33 @@
+# Runs the build and run lines written at the top of examples/c/embed.c, exactly as written, in a
+# scratch directory laid out like the repository root (api/, examples/ and build/ linked in), so the
+# instructions a user copies keep working; examples/README.md must give the same lines (cmake -P, from
+# CTest).
+file(STRINGS ${SOURCE} build_line REGEX "^ \\*   cc ")
+file(STRINGS ${SOURCE} run_line REGEX "^ \\*   \\./embed ")
+list(LENGTH build_line n_build)
+list(LENGTH run_line n_run)
+if(NOT n_build EQUAL 1 OR NOT n_run EQUAL 1)
+  message(FATAL_ERROR "expected one build line and one run line at the top of ${SOURCE}")
+endif()
+string(REGEX REPLACE "^ \\*   " "" build_line "${build_line}")
+string(REGEX REPLACE "^ \\*   " "" run_line "${run_line}")
+# examples/README.md gives the same two lines.
+file(READ ${SOURCE_DIR}/examples/README.md readme)
+foreach(line "${build_line}" "${run_line}")
+  string(FIND "${readme}" "    ${line}\n" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "examples/README.md does not give the line of embed.c: ${line}")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(CREATE_LINK ${SOURCE_DIR}/api ${WORK}/api SYMBOLIC)
+file(CREATE_LINK ${SOURCE_DIR}/examples ${WORK}/examples SYMBOLIC)
+file(CREATE_LINK ${BINARY_DIR} ${WORK}/build SYMBOLIC)
+foreach(line "${build_line}" "${run_line}")
+  message("$ ${line}")
+  execute_process(COMMAND sh -c "${line}" WORKING_DIRECTORY ${WORK} RESULT_VARIABLE failed)
+  if(NOT failed EQUAL 0)
+    message(FATAL_ERROR "'${line}' failed (${failed})")
+  endif()
+endforeach()
