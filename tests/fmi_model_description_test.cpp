@@ -1,7 +1,5 @@
 // modelDescription.xml against the component's variable table, the committed copy and the FMI 3.0
 // schema; and the table's own consistency.
-#include <libxml/parser.h>
-#include <libxml/tree.h>
 #include <libxml/xmlschemas.h>
 
 #include <catch2/catch.hpp>
@@ -18,6 +16,7 @@
 #include "fmi/model_binding.hpp"
 #include "fmi/parameter_values.hpp"
 #include "fmi/variables.hpp"
+#include "model_description_xml.hpp"
 #include "peristep.h"
 
 using namespace peristep::fmi;
@@ -32,28 +31,7 @@ std::string readFile(const char* path) {
   return s.str();
 }
 
-// A parsed XML document, freed on destruction.
-struct Document {
-  explicit Document(const char* path) : doc(xmlReadFile(path, nullptr, XML_PARSE_NONET)) { REQUIRE(doc != nullptr); }
-  ~Document() { xmlFreeDoc(doc); }
-  xmlNodePtr root() const { return xmlDocGetRootElement(doc); }
-  xmlDocPtr doc;
-};
-
-std::string attribute(xmlNodePtr node, const char* name) {
-  xmlChar* v = xmlGetProp(node, BAD_CAST name);
-  std::string s = v ? reinterpret_cast<const char*>(v) : "";
-  xmlFree(v);
-  return s;
-}
-
-std::vector<xmlNodePtr> children(xmlNodePtr node, const char* name = nullptr) {
-  std::vector<xmlNodePtr> out;
-  for (xmlNodePtr c = node->children; c; c = c->next)
-    if (c->type == XML_ELEMENT_NODE && (!name || xmlStrEqual(c->name, BAD_CAST name))) out.push_back(c);
-  return out;
-}
-
+// The only child element of that name.
 xmlNodePtr child(xmlNodePtr node, const char* name) {
   const auto all = children(node, name);
   REQUIRE(all.size() == 1);
@@ -94,7 +72,7 @@ TEST_CASE("modelDescription.xml validates against the FMI 3.0 schema", "[modelDe
   REQUIRE(schema != nullptr);
   for (const char* path : {PERISTEP_GENERATED_MODEL_DESCRIPTION, PERISTEP_COMMITTED_MODEL_DESCRIPTION}) {
     INFO(path);
-    Document doc(path);
+    XmlDocument doc(path);
     xmlSchemaValidCtxtPtr validator = xmlSchemaNewValidCtxt(schema);
     xmlSchemaSetValidErrors(validator, collectSchemaError, collectSchemaError, &errors);
     const int result = xmlSchemaValidateDoc(validator, doc.doc);
@@ -106,7 +84,7 @@ TEST_CASE("modelDescription.xml validates against the FMI 3.0 schema", "[modelDe
 }
 
 TEST_CASE("the variables of the table and of modelDescription.xml are the same", "[modelDescription]") {
-  Document doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
+  XmlDocument doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
   std::map<fmi3ValueReference, xmlNodePtr> xml;
   std::vector<fmi3ValueReference> order;
   for (xmlNodePtr v : children(child(doc.root(), "ModelVariables"))) {

@@ -3,9 +3,6 @@
 // the knowns it lists; no attribute means all). Each scene runs on a coarse grid through the C ABI: one
 // step at the base inputs, an FMU state saved, then the next step once at the base inputs and once with
 // one input changed; the outputs of the two are compared.
-#include <libxml/parser.h>
-#include <libxml/tree.h>
-
 #include <catch2/catch.hpp>
 #include <functional>
 #include <map>
@@ -13,6 +10,7 @@
 #include <sstream>
 
 #include "fmi_abi_support.hpp"
+#include "model_description_xml.hpp"
 
 namespace {
 
@@ -23,14 +21,6 @@ struct Output {
   std::optional<std::vector<fmi3ValueReference>> dependencies;  // unset: every known
 };
 
-std::string attribute(xmlNodePtr node, const char* name, bool* present = nullptr) {
-  xmlChar* v = xmlGetProp(node, BAD_CAST name);
-  if (present) *present = v != nullptr;
-  std::string s = v ? reinterpret_cast<const char*>(v) : "";
-  xmlFree(v);
-  return s;
-}
-
 std::vector<fmi3ValueReference> references(const std::string& list) {
   std::istringstream in(list);
   std::vector<fmi3ValueReference> out;
@@ -40,29 +30,21 @@ std::vector<fmi3ValueReference> references(const std::string& list) {
 
 // The outputs of the generated modelDescription.xml with their <Output dependencies>.
 std::vector<Output> outputs() {
-  xmlDocPtr doc = xmlReadFile(PERISTEP_GENERATED_MODEL_DESCRIPTION, nullptr, XML_PARSE_NONET);
-  REQUIRE(doc != nullptr);
+  const XmlDocument doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
   std::map<fmi3ValueReference, Output> byReference;
-  for (xmlNodePtr section = xmlDocGetRootElement(doc)->children; section; section = section->next) {
-    if (section->type != XML_ELEMENT_NODE) continue;
-    const std::string name = reinterpret_cast<const char*>(section->name);
-    if (name != "ModelVariables" && name != "ModelStructure") continue;
-    for (xmlNodePtr e = section->children; e; e = e->next) {
-      if (e->type != XML_ELEMENT_NODE) continue;
-      const auto vr = static_cast<fmi3ValueReference>(std::stoul(attribute(e, "valueReference")));
-      if (name == "ModelVariables" && attribute(e, "causality") == "output") {
-        Output& o = byReference[vr];
-        o = {attribute(e, "name"), reinterpret_cast<const char*>(e->name), vr, {}, {}};
-        for (xmlNodePtr d = e->children; d; d = d->next)
-          if (d->type == XML_ELEMENT_NODE) o.dimensions.push_back(std::stoul(attribute(d, "valueReference")));
-      }
-      bool present = false;
-      const std::string deps = attribute(e, "dependencies", &present);
-      if (name == "ModelStructure" && xmlStrEqual(e->name, BAD_CAST "Output") && present)
-        byReference.at(vr).dependencies = references(deps);
-    }
+  for (xmlNodePtr v : children(firstChild(doc.root(), "ModelVariables"))) {
+    if (attribute(v, "causality") != "output") continue;
+    Output o{attribute(v, "name"),
+             elementName(v),
+             static_cast<fmi3ValueReference>(std::stoul(attribute(v, "valueReference"))),
+             {},
+             {}};
+    for (xmlNodePtr d : children(v, "Dimension")) o.dimensions.push_back(std::stoul(attribute(d, "valueReference")));
+    byReference.emplace(o.vr, o);
   }
-  xmlFreeDoc(doc);
+  for (xmlNodePtr e : children(firstChild(doc.root(), "ModelStructure"), "Output"))
+    if (const auto deps = optionalAttribute(e, "dependencies"))
+      byReference.at(std::stoul(attribute(e, "valueReference"))).dependencies = references(*deps);
   std::vector<Output> out;
   for (auto& [vr, o] : byReference) out.push_back(o);
   return out;
@@ -122,8 +104,8 @@ void grid(Session& s, std::int64_t scene, std::uint64_t nx, std::uint64_t ny, st
   REQUIRE(s.setInt64(PERISTEP_VR_SCENE, scene) == fmi3OK);
 }
 
-void dynamic(Session& s, std::int64_t scene, std::uint64_t nx, std::uint64_t ny, double Lx, double Ly, double deltaOverH,
-             double internalStep) {
+void dynamic(Session& s, std::int64_t scene, std::uint64_t nx, std::uint64_t ny, double Lx, double Ly,
+             double deltaOverH, double internalStep) {
   grid(s, scene, nx, ny);
   REQUIRE(s.setFloat64(PERISTEP_VR_LX, {Lx}) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_LY, {Ly}) == fmi3OK);
@@ -153,8 +135,8 @@ TEST_CASE("every output lists the inputs it depends on in every scene", "[modelD
        },
        0.25, PERISTEP_VR_LOAD_DISPLACEMENT},
       // 001's Plexiglass square at eps = 8 mm, h = eps/2, at its step 0.004 us.
-      {"plexiglassCrack", [](Session& s) { dynamic(s, PERISTEP_SCENE_PLEXIGLASS_CRACK, 25, 25, 0.1, 0.1, 2, 0); },
-       2e-6, PERISTEP_VR_LOAD_FACTOR},
+      {"plexiglassCrack", [](Session& s) { dynamic(s, PERISTEP_SCENE_PLEXIGLASS_CRACK, 25, 25, 0.1, 0.1, 2, 0); }, 2e-6,
+       PERISTEP_VR_LOAD_FACTOR},
       // 001's beam at h = 3.125 mm with an internal step far below the stability limit but above 001's.
       {"bendingOneNotch",
        [](Session& s) { dynamic(s, PERISTEP_SCENE_BENDING_ONE_NOTCH, 80, 16, 0.25, 0.05, 3, 0.05e-6); }, 10e-6,
@@ -176,8 +158,8 @@ TEST_CASE("every output lists the inputs it depends on in every scene", "[modelD
         ++differing;
         const Output& o = all[k];
         INFO(o.name << " changed");
-        CHECK((!o.dependencies || std::find(o.dependencies->begin(), o.dependencies->end(), kInputs[input]) !=
-                                      o.dependencies->end()));
+        CHECK((!o.dependencies ||
+               std::find(o.dependencies->begin(), o.dependencies->end(), kInputs[input]) != o.dependencies->end()));
       }
       if (kInputs[input] == scene.drivenBy) CHECK(differing > 0);  // the change reaches the outputs
     }

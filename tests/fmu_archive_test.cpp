@@ -1,14 +1,14 @@
 // PeriStep.fmu unpacked with libzip: exactly the model description, the binary and the
 // documentation, byte for byte the files they were packed from; the documentation lists every variable
 // of the packed model description.
-#include <libxml/parser.h>
-#include <libxml/tree.h>
 #include <zip.h>
 
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <map>
 #include <sstream>
+
+#include "model_description_xml.hpp"
 
 namespace {
 
@@ -59,30 +59,18 @@ TEST_CASE("PeriStep.fmu holds the model description, the binary and the document
 TEST_CASE("the FMU's documentation/index.html lists every variable of its model description", "[fmu]") {
   const auto entries = unpack(PERISTEP_FMU_ARCHIVE);
   REQUIRE(entries.count("documentation/index.html") == 1);
-  const std::string& xml = entries.at("modelDescription.xml");
   const std::string& html = entries.at("documentation/index.html");
-  xmlDocPtr doc = xmlReadMemory(xml.data(), static_cast<int>(xml.size()), "modelDescription.xml", nullptr, XML_PARSE_NONET);
-  REQUIRE(doc != nullptr);
-  xmlNodePtr variables = nullptr;
-  for (xmlNodePtr c = xmlDocGetRootElement(doc)->children; c; c = c->next)
-    if (c->type == XML_ELEMENT_NODE && xmlStrEqual(c->name, BAD_CAST "ModelVariables")) variables = c;
-  REQUIRE(variables != nullptr);
+  const XmlDocument doc(entries.at("modelDescription.xml"));
   std::size_t listed = 0;
-  for (xmlNodePtr v = variables->children; v; v = v->next) {
-    if (v->type != XML_ELEMENT_NODE) continue;
-    xmlChar* name = xmlGetProp(v, BAD_CAST "name");
-    xmlChar* vr = xmlGetProp(v, BAD_CAST "valueReference");
-    const std::string n = reinterpret_cast<const char*>(name), r = reinterpret_cast<const char*>(vr);
-    xmlFree(name);
-    xmlFree(vr);
+  for (xmlNodePtr v : children(firstChild(doc.root(), "ModelVariables"))) {
     // The variable's row: its name, then its value reference, then its type (the XML element's name).
-    const std::string row = "<tr id=\"var-" + n + "\"><td><code>" + n + "</code></td><td>" + r + "</td><td>" +
-                            reinterpret_cast<const char*>(v->name);
+    const std::string name = attribute(v, "name");
+    const std::string row = "<tr id=\"var-" + name + "\"><td><code>" + name + "</code></td><td>" +
+                            attribute(v, "valueReference") + "</td><td>" + elementName(v);
     INFO(row);
     CHECK(html.find(row) != std::string::npos);
     ++listed;
   }
-  xmlFreeDoc(doc);
   CHECK(listed > 40);
   // The page names no file the archive lacks (the C header stays in the source tree).
   CHECK(html.find(".h<") == std::string::npos);
