@@ -55,6 +55,16 @@ std::string dimensions(const Variable& v) {
   return d;
 }
 
+// Outputs: the inputs the output depends on (as in <Output dependencies>); "every known" where unset.
+std::string dependsOn(const Variable& v) {
+  if (v.causality != Causality::Output) return "";
+  if (!v.dependencies) return "every known";
+  if (v.dependencies->empty()) return "no input";
+  std::string d;
+  for (fmi3ValueReference r : *v.dependencies) d.append(d.empty() ? "" : ", ").append(code(findVariable(r)->name));
+  return d;
+}
+
 std::string unit(const UnitDefinition& u) {
   if (!u.integerPowers) return "no SI base-unit form with integer powers";
   std::string s;
@@ -76,14 +86,15 @@ void writeVariables(std::ostream& out) {
          "<code>nModes</code>; an array's start value holds for every element. Enumerations are read and "
          "written with <code>fmi3GetInt64</code>/<code>fmi3SetInt64</code>.</p>\n"
          "<table>\n<tr><th>Name</th><th>Value reference</th><th>Type</th><th>Causality</th><th>Variability</th>"
-         "<th>Unit</th><th>Dimensions</th><th>Start</th><th>Range</th><th>Description</th></tr>\n";
+         "<th>Unit</th><th>Dimensions</th><th>Start</th><th>Range</th><th>Output depends on</th><th>Description</th>"
+         "</tr>\n";
   for (const Variable& v : variables()) {
     const std::string type = v.declaredType.empty() ? std::string(typeName(v.type))
                                                     : std::string(typeName(v.type)) + " " + code(v.declaredType);
     out << "<tr id=\"var-" << escaped(v.name) << "\">" << cell(code(v.name)) << cell(std::to_string(v.vr))
         << cell(type) << cell(std::string(causalityName(v.causality)))
         << cell(std::string(variabilityName(v.variability))) << cell(escaped(v.unit)) << cell(escaped(dimensions(v)))
-        << cell(escaped(v.start)) << cell(range(v)) << cell(escaped(v.description)) << "</tr>\n";
+        << cell(escaped(v.start)) << cell(range(v)) << cell(dependsOn(v)) << cell(escaped(v.description)) << "</tr>\n";
   }
   out << "</table>\n";
 }
@@ -110,13 +121,17 @@ void writePage(const char* path) {
       << ".</p>\n<p>An FMI 3.0 Co-Simulation FMU for x86_64 Linux (model identifier <code>"
       << PERISTEP_MODEL_IDENTIFIER << "</code>, instantiation token <code>" << PERISTEP_INSTANTIATION_TOKEN
       << "</code>). This page is generated from the variable table that modelDescription.xml is generated from."
-         "</p>\n\n"
+         " References such as 000:(5.2) name an equation of Fan et al., A meshfree peridynamic model for brittle "
+         "fracture in randomly heterogeneous materials, CMAME 399 (2022) 115340; 001 is Jha and Lipton, Numerical "
+         "convergence of finite difference approximations for state based peridynamic fracture models, CMAME 351 "
+         "(2019) 184-225.</p>\n\n"
          "<h2>How to run it</h2>\n<ol>\n"
          "<li>Optionally enter Configuration Mode and set the structural parameters <code>nx</code>, "
          "<code>ny</code> (points per side) and <code>nModes</code> (length of <code>xi</code>).</li>\n"
          "<li>Set the parameters (<code>scene</code>, <code>Lx</code>, <code>Ly</code>, <code>deltaOverH</code>, "
-         "<code>poissonRatio</code>, <code>xi</code>, ...) in Instantiated or Initialization Mode. The quasi-static "
-         "scenes need a uniform spacing <code>Lx/(nx-1) = Ly/(ny-1)</code>.</li>\n"
+         "<code>poissonRatio</code>, <code>xi</code>, ...) in Instantiated or Initialization Mode. The spacing "
+         "must be uniform: <code>Lx/(nx-1) = Ly/(ny-1)</code> on the point grids of the quasi-static scenes, "
+         "<code>Lx/nx = Ly/ny</code> on the cell-centred lattices of the dynamic ones.</li>\n"
          "<li><code>fmi3ExitInitializationMode</code> builds the scene and computes the outputs at the current "
          "inputs.</li>\n"
          "<li>Each <code>fmi3DoStep</code> of a quasi-static scene is one load increment: it solves at the current "
@@ -150,8 +165,8 @@ void writePage(const char* path) {
          "<li>In Step Mode, values may not be read after a value was set until the next "
          "<code>fmi3DoStep</code>.</li>\n"
          "<li>FMU states can be saved, restored and serialized.</li>\n"
-         "<li>A scalar output that a scene does not define reads 0; each output's description names the scenes "
-         "that compute it.</li>\n</ul>\n</body>\n</html>\n";
+         "<li>Each output's description names the scenes that compute it and what it reads in the "
+         "others.</li>\n</ul>\n</body>\n</html>\n";
   if (!out) throw std::runtime_error(std::string("cannot write ") + path);
 }
 
