@@ -242,11 +242,8 @@ Snapshot* Instance::saveState(Snapshot* reuse) {
 
 void Instance::restoreState(const Snapshot* state) {
   const Snapshot& s = owned(state);
-  if (const Variable* d = s.values.firstStructuralDifference(values_))
-    throw InvalidInput("the FMU state was saved with " + std::string(d->name) + " = " +
-                       std::to_string(s.values.scalar<std::uint64_t>(d->vr)) + " but this instance has " +
-                       std::string(d->name) + " = " + std::to_string(values_.scalar<std::uint64_t>(d->vr)) +
-                       "; structural parameters must agree");
+  // The state holds every parameter, structural ones included: an instance configured otherwise
+  // takes the state's structure (FMI 3.0, fmi3GetFMUState: a state holds all that is needed to continue).
   if (!s.hasModel) {
     model_.reset();
   } else if (model_ && values_.sameSetUp(s.values)) {
