@@ -14,11 +14,15 @@ namespace peristep {
 namespace {
 
 // PCA of the crystal indicator over the realizations of seeds 1..n on the specimen's cloud, computed
-// once per process for a grid, fraction, n and number of modes (the samples of a study share it).
+// once per process for one cloud, fraction, n and number of modes (the samples of a study share it).
+// The key holds everything the modes depend on, at full precision: the cloud (grid, horizon, jitter
+// and, for a jittered cloud, its seed), the fraction, n and k.
 std::shared_ptr<const PcaModes> crystalPca(const SceneParameters& p) {
+  const GridSpec& g = p.grid;
   std::ostringstream key;
-  key << "glassCeramic " << p.grid.nx << 'x' << p.grid.ny << ' ' << p.grid.Lx << ' ' << p.grid.Ly << ' '
-      << p.grid.deltaOverH << " f=" << p.crystalFraction << " n=" << p.pcaRealizations << " k=" << p.xi.size();
+  key << std::hexfloat << "glassCeramic " << g.nx << 'x' << g.ny << ' ' << g.Lx << ' ' << g.Ly << ' '
+      << g.deltaOverH << " jitter=" << g.jitter << " seed=" << (g.jitter == 0.0 ? 0 : g.seed)
+      << " f=" << p.crystalFraction << " n=" << p.pcaRealizations << " k=" << p.xi.size();
   return cachedPca(key.str(), [&] {
     GridSpec grid = p.grid;
     grid.collar = true;
