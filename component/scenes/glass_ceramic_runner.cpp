@@ -1,7 +1,9 @@
 // The pre-cracked glass-ceramic plate (000 Sec. 5) opened by the displacement input U_D; its material is
 // the microstructure of a seed or, with pcaRealizations > 0, the PCA field 000:(5.5) at the coordinates xi.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <omp.h>
 #include <sstream>
 
 #include "fracture/bond_state.hpp"
@@ -32,9 +34,14 @@ std::shared_ptr<const PcaModes> crystalPca(const SceneParameters& p) {
     spec.values = cloud.size();
     spec.realizations = p.pcaRealizations;
     spec.modes = p.xi.size();
+    // Realizations are generated on every thread; the calling thread (0) reports the count.
+    std::atomic<std::uint64_t> generated{0};
+    ProgressReporter report(p.progress, "pcaRealizations", spec.realizations * (spec.powerIterations + 2));
     return streamedPca(spec, [&](std::size_t j, std::span<double> out) {
       const std::vector<std::uint8_t> R = generateMicrostructure(cloud, p.crystalFraction, 1 + j);
       std::copy(R.begin(), R.end(), out.begin());
+      const std::uint64_t done = ++generated;
+      if (omp_get_thread_num() == 0) report(done);
     });
   });
 }
