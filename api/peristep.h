@@ -70,7 +70,12 @@ enum PeriStepValueReference {
   /* parameters of the dynamic scenes (5-7) */
   PERISTEP_VR_TIME_INTEGRATOR = 60,       /* Enumeration (fmi3Get/SetInt64): enum PeriStepTimeIntegrator */
   PERISTEP_VR_INTERNAL_TIME_STEP = 61,    /* Float64, s: central difference step; 0: the scene's */
-  PERISTEP_VR_INTEGRATOR_TOLERANCE = 62   /* Float64: relative tolerance of the SUNDIALS integrators */
+  PERISTEP_VR_INTEGRATOR_TOLERANCE = 62,  /* Float64: relative tolerance of the SUNDIALS integrators */
+
+  /* bounds on the work one call may start (refused up front with the estimate) */
+  PERISTEP_VR_MEMORY_BUDGET = 63,     /* UInt64, bytes: estimated set-up memory; 0: 3/4 of usable memory */
+  PERISTEP_VR_SET_UP_TIME_LIMIT = 64, /* Float64, s: estimated set-up time; 0: no limit */
+  PERISTEP_VR_MAX_INTERNAL_STEPS = 65 /* UInt64: internal time steps per fmi3DoStep; 0: no limit */
 };
 
 /* Values of the enumeration PeriStep.Scene (variable "scene") */

@@ -1,5 +1,5 @@
 #pragma once
-// Peak resident memory of this process, read from /proc (Linux).
+// Peak resident memory of this process, read from /proc (Linux), and the memory it may use.
 #include <cstddef>
 
 namespace peristep {
@@ -8,5 +8,7 @@ namespace peristep {
 std::size_t peakMemoryBytes();
 // Restart the peak count (Linux >= 4.0); returns false where the kernel does not allow it.
 bool resetPeakMemory();
+// Physical memory of the machine or this process's address-space limit (RLIMIT_AS), whichever is smaller.
+std::size_t usableMemoryBytes();
 
 }  // namespace peristep

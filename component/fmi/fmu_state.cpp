@@ -3,6 +3,8 @@
 #include <cstring>
 #include <string>
 
+#include "core/checksum.hpp"
+
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -10,7 +12,7 @@ namespace peristep::fmi {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x53505350;  // "PSPS"
-constexpr std::uint32_t kFormat = 1;
+constexpr std::uint32_t kFormat = 2;  // 2: FNV-1a 64 checksum at the end
 
 // The token identifies the variable table the state was written against.
 constexpr std::string_view kToken = PERISTEP_INSTANTIATION_TOKEN;
@@ -35,14 +37,28 @@ std::vector<std::uint8_t> serialize(const Snapshot& s) {
   out.put<std::uint8_t>(s.setSinceStep);
   out.put<std::uint8_t>(s.hasModel);
   out.putArray(std::span<const std::uint8_t>(s.model));
-  return out.take();
+  std::vector<std::uint8_t> bytes = out.take();
+  const std::uint64_t sum = fnv1a64(bytes);
+  const auto* p = reinterpret_cast<const std::uint8_t*>(&sum);
+  bytes.insert(bytes.end(), p, p + sizeof sum);
+  return bytes;
 }
 
 Snapshot deserialize(std::span<const std::uint8_t> bytes) {
-  ByteReader in(bytes);
-  if (in.get<std::uint32_t>() != kMagic) ByteReader::corrupt("it does not start like a PeriStep FMU state");
-  if (const auto f = in.get<std::uint32_t>(); f != kFormat)
+  ByteReader head(bytes);
+  if (head.get<std::uint32_t>() != kMagic) ByteReader::corrupt("it does not start like a PeriStep FMU state");
+  if (const auto f = head.get<std::uint32_t>(); f != kFormat)
     ByteReader::corrupt("format " + std::to_string(f) + ", this build reads format " + std::to_string(kFormat));
+  // The checksum before anything else is read: a value edited into another legal value would pass
+  // every check below.
+  std::uint64_t stored = 0;
+  if (bytes.size() < 2 * sizeof(std::uint32_t) + sizeof stored) ByteReader::corrupt("it ends early");
+  const auto payload = bytes.first(bytes.size() - sizeof stored);
+  std::memcpy(&stored, bytes.data() + payload.size(), sizeof stored);
+  if (fnv1a64(payload) != stored) ByteReader::corrupt("checksum mismatch (the bytes were changed or truncated)");
+  ByteReader in(payload);
+  in.get<std::uint32_t>();  // magic and format, checked above
+  in.get<std::uint32_t>();
   const auto token = in.getArray<char>();
   if (std::string_view(token.data(), token.size()) != kToken)
     ByteReader::corrupt("it was written by another PeriStep build (instantiation token differs)");

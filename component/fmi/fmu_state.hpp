@@ -25,7 +25,7 @@ struct Snapshot {
 
 std::vector<std::uint8_t> serialize(const Snapshot& s);
 // Throws InvalidInput("serialized FMU state is corrupt: ...") for bytes that are not a state of
-// this PeriStep build (wrong magic, token or layout, values out of range, trailing bytes).
+// this PeriStep build (wrong magic, checksum, token or layout, values out of range, trailing bytes).
 Snapshot deserialize(std::span<const std::uint8_t> bytes);
 
 }  // namespace peristep::fmi

@@ -130,12 +130,21 @@ void Instance::reset() {
 SceneModel& Instance::model() {
   if (!model_) {
     Stopwatch watch;
-    model_ = std::make_unique<SceneModel>(sceneParameters(values_));
+    model_ = std::make_unique<SceneModel>(setUp(values_));
     solutionValid_ = false;
     logger_.event("scene set up (geometry, quadrature, assembly, factorization) in " + number(watch.seconds()) +
                   " s");
   }
   return *model_;
+}
+
+SceneParameters Instance::setUp(const ParameterValues& values) const {
+  SceneParameters p = sceneParameters(values);
+  // Always attached (the logger drops what is switched off): fmi3SetDebugLogging may come later.
+  p.progress = [this](std::string_view phase, std::uint64_t done, std::uint64_t total) {
+    logger_.progress(phase, done, total);
+  };
+  return p;
 }
 
 void Instance::solve(double stepSize) {
@@ -242,17 +251,14 @@ Snapshot* Instance::saveState(Snapshot* reuse) {
 
 void Instance::restoreState(const Snapshot* state) {
   const Snapshot& s = owned(state);
-  if (const Variable* d = s.values.firstStructuralDifference(values_))
-    throw InvalidInput("the FMU state was saved with " + std::string(d->name) + " = " +
-                       std::to_string(s.values.scalar<std::uint64_t>(d->vr)) + " but this instance has " +
-                       std::string(d->name) + " = " + std::to_string(values_.scalar<std::uint64_t>(d->vr)) +
-                       "; structural parameters must agree");
+  // The state holds every parameter, structural ones included: an instance configured otherwise
+  // takes the state's structure (FMI 3.0, fmi3GetFMUState: a state holds all that is needed to continue).
   if (!s.hasModel) {
     model_.reset();
   } else if (model_ && values_.sameSetUp(s.values)) {
     model_->restoreState(s.model);  // the same scene: keep its factorization
   } else {
-    auto fresh = std::make_unique<SceneModel>(sceneParameters(s.values));
+    auto fresh = std::make_unique<SceneModel>(setUp(s.values));
     fresh->restoreState(s.model);
     model_ = std::move(fresh);
   }

@@ -60,6 +60,8 @@ class Instance {
  private:
   const Snapshot& owned(const Snapshot* s) const;
   SceneModel& model();
+  // The scene of `values` with this instance's progress messages.
+  SceneParameters setUp(const ParameterValues& values) const;
   // At the current inputs: a quasi-static scene solves; a dynamic one integrates from time_ over
   // stepSize (0: outputs at time_, nothing integrated).
   void solve(double stepSize = 0);

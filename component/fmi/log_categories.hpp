@@ -7,7 +7,7 @@
 
 namespace peristep::fmi {
 
-enum class LogCategory : std::size_t { Events, StatusWarning, StatusError };
+enum class LogCategory : std::size_t { Events, StatusWarning, StatusError, Progress };
 
 struct LogCategoryInfo {
   LogCategory id;
@@ -16,13 +16,17 @@ struct LogCategoryInfo {
   bool onWhenLoggingOn;  // enabled by loggingOn = true at instantiation (the "vendor defined set")
 };
 
-inline constexpr std::array<LogCategoryInfo, 3> kLogCategories{{
+inline constexpr std::array<LogCategoryInfo, 4> kLogCategories{{
     {LogCategory::Events, "logEvents",
      "Mode changes, scene set-up and every communication step (debug detail)", false},
     {LogCategory::StatusWarning, "logStatusWarning",
      "Messages of calls returning fmi3Warning (PeriStep returns none in normal operation)", true},
     {LogCategory::StatusError, "logStatusError",
      "Why a call returned fmi3Error: illegal call sequence, bad argument, invalid value, solver failure", true},
+    {LogCategory::Progress, "logProgress",
+     "How far a long initialization or step has come, as 'progress: <phase> <done>/<total>' (phases setUp, "
+     "pcaRealizations, internalSteps)",
+     false},
 }};
 
 }  // namespace peristep::fmi

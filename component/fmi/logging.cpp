@@ -20,6 +20,16 @@ void Logger::error(std::string_view message) const noexcept { log(LogCategory::S
 
 void Logger::event(std::string_view message) const noexcept { log(LogCategory::Events, fmi3OK, message); }
 
+void Logger::progress(std::string_view phase, std::uint64_t done, std::uint64_t total) const noexcept {
+  if (!progressOn()) return;
+  try {
+    log(LogCategory::Progress, fmi3OK,
+        "progress: " + std::string(phase) + " " + std::to_string(done) + "/" + std::to_string(total));
+  } catch (...) {
+    // no memory for the message: progress is not worth an error
+  }
+}
+
 void Logger::log(LogCategory c, fmi3Status status, std::string_view message) const noexcept {
   if (!callback_ || !enabled(c)) return;
   try {

@@ -2,6 +2,7 @@
 // The importer's logMessage callback behind the log categories of modelDescription.xml. loggingOn
 // at instantiation enables the status categories; fmi3SetDebugLogging switches any of them.
 #include <array>
+#include <cstdint>
 #include <span>
 #include <string_view>
 
@@ -19,6 +20,9 @@ class Logger {
   // Category logEvents, status fmi3OK.
   void event(std::string_view message) const noexcept;
   bool eventsOn() const { return enabled(LogCategory::Events); }
+  // Category logProgress, status fmi3OK: "progress: <phase> <done>/<total>". Never throws.
+  void progress(std::string_view phase, std::uint64_t done, std::uint64_t total) const noexcept;
+  bool progressOn() const { return enabled(LogCategory::Progress); }
 
   // fmi3SetDebugLogging: no categories means all of them. Throws InvalidInput for an unknown name
   // (and then changes nothing).

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/errors.hpp"
+#include "core/memory.hpp"
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -140,6 +141,11 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.timeIntegrator = integratorName(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
   p.internalTimeStep = v.scalar<double>(PERISTEP_VR_INTERNAL_TIME_STEP);
   p.integratorTolerance = v.scalar<double>(PERISTEP_VR_INTEGRATOR_TOLERANCE);
+  // memoryBudget 0: 3/4 of what the process can use, leaving room for the importer and other instances.
+  const auto budget = v.scalar<std::uint64_t>(PERISTEP_VR_MEMORY_BUDGET);
+  p.limits.memoryBytes = budget > 0 ? static_cast<double>(budget) : 0.75 * static_cast<double>(usableMemoryBytes());
+  p.limits.setUpSeconds = v.scalar<double>(PERISTEP_VR_SET_UP_TIME_LIMIT);
+  p.limits.internalSteps = v.scalar<std::uint64_t>(PERISTEP_VR_MAX_INTERNAL_STEPS);
   return p;
 }
 

@@ -142,12 +142,6 @@ bool ParameterValues::sameSetUp(const ParameterValues& other) const {
   return true;
 }
 
-const Variable* ParameterValues::firstStructuralDifference(const ParameterValues& other) const {
-  for (const Variable& v : variables())
-    if (v.causality == Causality::StructuralParameter && slots_.at(v.vr) != other.slots_.at(v.vr)) return &v;
-  return nullptr;
-}
-
 void ParameterValues::write(ByteWriter& out) const {
   out.put<std::uint64_t>(slots_.size());
   for (const auto& [vr, slot] : slots_) {

@@ -51,8 +51,6 @@ class ParameterValues {
 
   // Equal in every variable except the inputs: the same scene set-up.
   bool sameSetUp(const ParameterValues& other) const;
-  // The first structural parameter whose value differs from other's; nullptr when they agree.
-  const Variable* firstStructuralDifference(const ParameterValues& other) const;
 
   void write(ByteWriter& out) const;
   static ParameterValues read(ByteReader& in);

@@ -227,6 +227,26 @@ std::vector<Variable> makeTable() {
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Dynamic scenes, SUNDIALS integrators: relative tolerance of the local error", .start = "1e-06",
        .min = Bound{0, true}, .max = Bound{1}},
+
+      // Bounds on the work one call may start: a set-up or step estimated beyond them is refused at once
+      // with the estimate and what to change (scenes/scene_cost.hpp, dynamic_runner.cpp).
+      {.name = "memoryBudget", .vr = PERISTEP_VR_MEMORY_BUDGET, .type = T::UInt64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Largest estimated memory in bytes of the scene set-up (grid, bonds, assembly, "
+                      "factorization, PCA, KL modes); a larger set-up is refused in initialization with the "
+                      "estimate. 0: three quarters of the machine's physical memory or of the process's "
+                      "address-space limit, whichever is smaller",
+       .start = "0", .min = Bound{0}},
+      {.name = "setUpTimeLimit", .vr = PERISTEP_VR_SET_UP_TIME_LIMIT, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Largest estimated run time of the scene set-up (initialization, or the first step after "
+                      "a parameter change); a longer one is refused with the estimate. 0: no limit",
+       .unit = "s", .start = "60", .min = Bound{0}},
+      {.name = "maxInternalSteps", .vr = PERISTEP_VR_MAX_INTERNAL_STEPS, .type = T::UInt64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Dynamic scenes: most internal time steps one fmi3DoStep may take; central difference "
+                      "refuses a longer step up front, the SUNDIALS integrators stop there. 0: no limit",
+       .start = "1000000", .min = Bound{0}},
   };
 }
 

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <omp.h>
 
+#include "core/parallel_errors.hpp"
 #include "models/lps_material.hpp"
 
 namespace peristep {
@@ -71,14 +72,13 @@ std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, c
                                             const std::vector<double>& u) {
   // Threads check contiguous point ranges and the lists are joined in thread order: the result (and the
   // breaking order recorded from it) is the same for any number of threads.
-  std::vector<std::vector<std::size_t>> found;
-#pragma omp parallel
+  std::vector<std::vector<std::size_t>> found(static_cast<std::size_t>(omp_get_max_threads()));
+  ParallelErrors errors;  // push_back allocates
+#pragma omp parallel num_threads(static_cast<int>(found.size()))
   {
-#pragma omp single
-    found.resize(static_cast<std::size_t>(omp_get_num_threads()));
     std::vector<std::size_t>& mine = found[static_cast<std::size_t>(omp_get_thread_num())];
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t ps = 0; ps < static_cast<std::ptrdiff_t>(c.size()); ++ps) {
+    for (std::ptrdiff_t ps = 0; ps < static_cast<std::ptrdiff_t>(c.size()); ++ps) errors.capture([&] {
       const auto p = static_cast<std::size_t>(ps);
       for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
         const std::uint32_t q = nb.index[k];
@@ -88,8 +88,9 @@ std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, c
         const double stretch = (std::hypot(zx + u[2 * q] - u[2 * p], zy + u[2 * q + 1] - u[2 * p + 1]) - r) / r;
         if (stretch > s.criticalStretch[k]) mine.push_back(k);
       }
-    }
+    });
   }
+  errors.rethrow();
   std::vector<std::size_t> fresh;
   for (const auto& f : found) fresh.insert(fresh.end(), f.begin(), f.end());
   for (std::size_t k : fresh) s.intact[k] = s.intact[s.reverse[k]] = 0;  // 000:(2.24): never heal

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <omp.h>
 
+#include "core/parallel_errors.hpp"
 #include "models/lps_material.hpp"
 
 namespace peristep {
@@ -168,8 +169,9 @@ LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vect
   const std::size_t n = c.size();
   const auto gamma = [&](std::size_t k) { return intact ? static_cast<double>((*intact)[k]) : 1.0; };
 
+  ParallelErrors errors;  // CsrPiece::append allocates: a bad_alloc must not leave the region
 #pragma omp parallel num_threads(threads)
-  {
+  errors.capture([&] {
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     const std::size_t first = n * t / static_cast<std::size_t>(threads);
     const std::size_t last = n * (t + 1) / static_cast<std::size_t>(threads);
@@ -237,7 +239,8 @@ LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vect
         piecesB[t].append(row.prescribed);
       }
     }
-  }
+  });
+  errors.rethrow();
   return {concatenate(piecesA, d.size), concatenate(piecesB, 2 * static_cast<std::int64_t>(n))};
 }
 

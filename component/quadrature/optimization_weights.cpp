@@ -5,6 +5,8 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "core/parallel_errors.hpp"
+
 namespace peristep {
 namespace {
 
@@ -91,13 +93,16 @@ std::vector<double> optimizationWeights(const PointCloud& c, const Neighbours& n
   const Eigen::VectorXd b = scaledMoments();
   const double area = c.delta * c.delta;  // w = delta^2 * (weights in scaled coordinates)
   std::vector<Eigen::VectorXd> shapeWeights(representative.size());
+  ParallelErrors errors;  // the dense solves allocate
 #pragma omp parallel for schedule(dynamic, 16)
-  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(representative.size()); ++s) {
-    const std::size_t p = representative[static_cast<std::size_t>(s)];
-    if (nb.end(p) == nb.begin(p)) continue;  // an isolated point has no quadrature
-    const Eigen::MatrixXd A = constraintMatrix(c, nb, p);
-    shapeWeights[static_cast<std::size_t>(s)] = area * A.completeOrthogonalDecomposition().solve(b);
-  }
+  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(representative.size()); ++s)
+    errors.capture([&] {
+      const std::size_t p = representative[static_cast<std::size_t>(s)];
+      if (nb.end(p) == nb.begin(p)) return;  // an isolated point has no quadrature
+      const Eigen::MatrixXd A = constraintMatrix(c, nb, p);
+      shapeWeights[static_cast<std::size_t>(s)] = area * A.completeOrthogonalDecomposition().solve(b);
+    });
+  errors.rethrow();
 
   std::vector<double> w(nb.bonds(), 0.0);
 #pragma omp parallel for schedule(static)

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <sstream>
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/parallel_errors.hpp"
 #include "models/fast_exp.hpp"
 #include "random/randomized_eigen.hpp"
 
@@ -57,25 +57,21 @@ KlField::KlField(std::span<const double> x, std::span<const double> y, double h,
     // Matrix-free h^2 C X: the kernel is re-evaluated on every product instead of storing N^2 values.
     const BlockProduct apply = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& AX) {
       AX.resize(n, X.cols());
-      std::exception_ptr error;  // an exception must not leave the parallel region (bad_alloc)
+      ParallelErrors errors;  // the slabs allocate
 #pragma omp parallel
       {
         Eigen::MatrixXd slab;
 #pragma omp for schedule(dynamic)
-        for (Eigen::Index r0 = 0; r0 < n; r0 += slabRows) {
-          try {
+        for (Eigen::Index r0 = 0; r0 < n; r0 += slabRows)
+          errors.capture([&] {
             const Eigen::Index rows = std::min(slabRows, n - r0);
             slab.resize(rows, n);
             for (Eigen::Index j = 0; j < n; ++j)
               for (Eigen::Index i = 0; i < rows; ++i) slab(i, j) = covariance(x_[r0 + i] - x_[j], y_[r0 + i] - y_[j]);
             AX.middleRows(r0, rows).noalias() = area * (slab * X);
-          } catch (...) {
-#pragma omp critical(peristep_kl_error)
-            if (!error) error = std::current_exception();
-          }
-        }
+          });
       }
-      if (error) std::rethrow_exception(error);
+      errors.rethrow();
     };
     pairs = randomizedEigen(x_.size(), apply,
                             {spec.modes, spec.oversampling, spec.powerIterations, spec.seed});

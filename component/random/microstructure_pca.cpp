@@ -1,12 +1,11 @@
 #include "random/microstructure_pca.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/parallel_errors.hpp"
 #include "random/randomized_eigen.hpp"
 
 namespace peristep {
@@ -31,37 +30,30 @@ class StreamedCovariance {
     Eigen::MatrixXd S = Eigen::MatrixXd::Zero(M, X.cols());
     Eigen::VectorXd sum = Eigen::VectorXd::Zero(firstPass ? M : 0);
     double sumSquares = 0;
-    std::atomic<bool> failed{false};
-    std::exception_ptr error;
+    ParallelErrors errors;  // generate_ and the block products allocate
 
 #pragma omp parallel
     {
-      Eigen::MatrixXd B, T, P;  // allocated inside the try: nothing may throw out of the region
+      Eigen::MatrixXd B, T, P;  // allocated inside capture(): nothing may throw out of the region
       Eigen::VectorXd chunkSum;
       double chunkSquares = 0;
 #pragma omp for ordered schedule(static, 1)
       for (Eigen::Index c = 0; c < chunks; ++c) {
         bool done = false;
-        if (!failed.load()) {
-          try {
-            const Eigen::Index j0 = c * chunkSize, cols = std::min(chunkSize, n - j0);
-            B.resize(M, chunkSize);  // no-op after the first chunk
-            for (Eigen::Index b = 0; b < cols; ++b)
-              generate_(static_cast<std::size_t>(j0 + b), std::span<double>(B.col(b).data(), spec_.values));
-            const auto block = B.leftCols(cols);
-            T.noalias() = block.transpose() * X;
-            P.noalias() = block * T;
-            if (firstPass) {
-              chunkSum = block.rowwise().sum();
-              chunkSquares = block.squaredNorm();
-            }
-            done = true;
-          } catch (...) {
-#pragma omp critical(peristep_pca_error)
-            if (!error) error = std::current_exception();
-            failed.store(true);
+        errors.capture([&] {
+          const Eigen::Index j0 = c * chunkSize, cols = std::min(chunkSize, n - j0);
+          B.resize(M, chunkSize);  // no-op after the first chunk
+          for (Eigen::Index b = 0; b < cols; ++b)
+            generate_(static_cast<std::size_t>(j0 + b), std::span<double>(B.col(b).data(), spec_.values));
+          const auto block = B.leftCols(cols);
+          T.noalias() = block.transpose() * X;
+          P.noalias() = block * T;
+          if (firstPass) {
+            chunkSum = block.rowwise().sum();
+            chunkSquares = block.squaredNorm();
           }
-        }
+          done = true;
+        });
 #pragma omp ordered
         if (done) {
           S += P;
@@ -72,7 +64,7 @@ class StreamedCovariance {
         }
       }
     }
-    if (error) std::rethrow_exception(error);
+    errors.rethrow();
     if (!S.allFinite()) throw SolverFailure("streamed PCA: a realization holds values that are not finite");
 
     const double nd = static_cast<double>(n);

@@ -15,6 +15,7 @@
 // The scene's clock starts at 0 with the run (t in the loads of 001 is the time since loading began,
 // whatever the importer's startTime) and advances by each communication step size.
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -89,10 +90,19 @@ std::vector<double> onMaterial(const PointCloud& c, const double* field, std::si
 class DynamicRunner final : public Runner {
  public:
   explicit DynamicRunner(const SceneParameters& p)
-      : scene_(makeScene(p)), output_(outputCloud(scene_)), diagnostics_(scene_), nu_(p.poissonRatio) {
+      : scene_(makeScene(p)),
+        output_(outputCloud(scene_)),
+        diagnostics_(scene_),
+        nu_(p.poissonRatio),
+        fixedStep_(p.timeIntegrator == "central_difference"),
+        maxSteps_(p.limits.internalSteps),
+        progress_(p.progress) {
     IntegratorOptions o;
     o.timeStep = p.internalTimeStep > 0 ? p.internalTimeStep : scene_.timeStep;
     o.relativeTolerance = p.integratorTolerance;
+    // The adaptive integrators cannot say their step count up front: they stop at the limit instead.
+    if (maxSteps_ > 0) o.maxSteps = static_cast<long>(std::min<std::uint64_t>(maxSteps_, LONG_MAX));
+    timeStep_ = o.timeStep;
     try {
       integrator_ = makeTimeIntegrator(p.timeIntegrator, *scene_.problem, o);
     } catch (const InvalidInput& e) {
@@ -109,6 +119,12 @@ class DynamicRunner final : public Runner {
   void advance(const SceneInputs& in) override {
     require(std::isfinite(in.stepSize) && in.stepSize >= 0,
             "communication step size must be non-negative (got " + std::to_string(in.stepSize) + ")");
+    const double steps = internalSteps(in.stepSize);
+    if (fixedStep_ && maxSteps_ > 0 && steps > static_cast<double>(maxSteps_))
+      throw InvalidInput("internalTimeStep " + text(timeStep_) + " s would need " + text(steps) +
+                         " internal steps in this communication step of " + text(in.stepSize) +
+                         " s; the limit is maxInternalSteps = " + std::to_string(maxSteps_) +
+                         "; use a smaller communication step or a larger internal step");
     DynamicProblem& problem = *scene_.problem;
     if (in.loadFactor != problem.loadScale()) {
       // New loads from this communication point on; the state itself is unchanged.
@@ -119,8 +135,31 @@ class DynamicRunner final : public Runner {
       problem.rescaleLoads(in.loadFactor, t, u.data());
       integrator_->setState(t, u.data(), v.data(), integrator_->externalWork());
     }
-    if (in.stepSize > 0) integrator_->advanceTo(integrator_->time() + in.stepSize);
+    if (in.stepSize > 0) advanceBy(in.stepSize, steps);
     record_ = diagnostics_.measure(*integrator_);
+  }
+
+  // Central difference: whole steps plus one landing on the end (solvers/central_difference.cpp).
+  double internalSteps(double stepSize) const { return std::ceil(stepSize / timeStep_ - 1e-6); }
+
+  // A long step of the central difference goes in pieces of whole internal steps, each reported to
+  // the progress hook. The pieces depend on the step count only, never on whether anyone listens, so
+  // the result is the same with and without progress messages.
+  void advanceBy(double stepSize, double steps) {
+    const double start = integrator_->time(), end = start + stepSize;
+    if (!fixedStep_ || steps <= kPieceSteps) {
+      integrator_->advanceTo(end);
+      return;
+    }
+    const double piece = std::max(kPieceSteps, std::ceil(steps / 20));
+    const auto total = static_cast<std::uint64_t>(steps);
+    ProgressReporter report(progress_, "internalSteps", total);
+    for (double done = piece; done < steps; done += piece) {
+      integrator_->advanceTo(start + done * timeStep_);
+      report(static_cast<std::uint64_t>(done));
+    }
+    integrator_->advanceTo(end);
+    report(total);
   }
 
   std::vector<double> ux() const override { return onMaterial(output_, integrator_->displacement(), 2, 0); }
@@ -174,6 +213,12 @@ class DynamicRunner final : public Runner {
   PointCloud output_;
   FractureDiagnostics diagnostics_;  // refers to scene_
   double nu_;
+  static constexpr double kPieceSteps = 1000;
+
+  bool fixedStep_;           // central difference: the step count of an interval is known up front
+  std::uint64_t maxSteps_;   // 0: no limit
+  ProgressHook progress_;
+  double timeStep_ = 0;
   std::unique_ptr<TimeIntegrator> integrator_;
   EnergyRecord record_;
 };

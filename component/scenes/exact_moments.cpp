@@ -3,6 +3,7 @@
 #include <cmath>
 #include <functional>
 
+#include "core/parallel_errors.hpp"
 #include "random/reference_rules.hpp"
 #include "scenes/interface_crack_field.hpp"
 #include "scenes/manufactured.hpp"
@@ -61,8 +62,9 @@ std::optional<ExactMoments> exactMoments(const SceneParameters& p, const PointCl
 
   const std::size_t n = cloud.domain.size();
   ExactMoments m{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
+  ParallelErrors errors;  // the exact fields are opaque callables: whatever they throw stays inside
 #pragma omp parallel for schedule(dynamic, 64)
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i) errors.capture([&] {
     const double x = cloud.x[cloud.domain[i]], y = cloud.y[cloud.domain[i]];
     // Sums of the deviation from the value at xi = 0: the variance loses no digits to cancellation.
     const Vec2 c = centre(x, y);
@@ -79,7 +81,8 @@ std::optional<ExactMoments> exactMoments(const SceneParameters& p, const PointCl
     m.meanUy[i] = c[1] + s1[1];
     m.stdUx[i] = std::sqrt(std::max(0.0, s2[0] - s1[0] * s1[0]));
     m.stdUy[i] = std::sqrt(std::max(0.0, s2[1] - s1[1] * s1[1]));
-  }
+  });
+  errors.rethrow();
   return m;
 }
 

@@ -1,7 +1,9 @@
 // The pre-cracked glass-ceramic plate (000 Sec. 5) opened by the displacement input U_D; its material is
 // the microstructure of a seed or, with pcaRealizations > 0, the PCA field 000:(5.5) at the coordinates xi.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <omp.h>
 #include <sstream>
 
 #include "fracture/bond_state.hpp"
@@ -14,11 +16,15 @@ namespace peristep {
 namespace {
 
 // PCA of the crystal indicator over the realizations of seeds 1..n on the specimen's cloud, computed
-// once per process for a grid, fraction, n and number of modes (the samples of a study share it).
+// once per process for one cloud, fraction, n and number of modes (the samples of a study share it).
+// The key holds everything the modes depend on, at full precision: the cloud (grid, horizon, jitter
+// and, for a jittered cloud, its seed), the fraction, n and k.
 std::shared_ptr<const PcaModes> crystalPca(const SceneParameters& p) {
+  const GridSpec& g = p.grid;
   std::ostringstream key;
-  key << "glassCeramic " << p.grid.nx << 'x' << p.grid.ny << ' ' << p.grid.Lx << ' ' << p.grid.Ly << ' '
-      << p.grid.deltaOverH << " f=" << p.crystalFraction << " n=" << p.pcaRealizations << " k=" << p.xi.size();
+  key << std::hexfloat << "glassCeramic " << g.nx << 'x' << g.ny << ' ' << g.Lx << ' ' << g.Ly << ' '
+      << g.deltaOverH << " jitter=" << g.jitter << " seed=" << (g.jitter == 0.0 ? 0 : g.seed)
+      << " f=" << p.crystalFraction << " n=" << p.pcaRealizations << " k=" << p.xi.size();
   return cachedPca(key.str(), [&] {
     GridSpec grid = p.grid;
     grid.collar = true;
@@ -28,9 +34,14 @@ std::shared_ptr<const PcaModes> crystalPca(const SceneParameters& p) {
     spec.values = cloud.size();
     spec.realizations = p.pcaRealizations;
     spec.modes = p.xi.size();
+    // Realizations are generated on every thread; the calling thread (0) reports the count.
+    std::atomic<std::uint64_t> generated{0};
+    ProgressReporter report(p.progress, "pcaRealizations", spec.realizations * (spec.powerIterations + 2));
     return streamedPca(spec, [&](std::size_t j, std::span<double> out) {
       const std::vector<std::uint8_t> R = generateMicrostructure(cloud, p.crystalFraction, 1 + j);
       std::copy(R.begin(), R.end(), out.begin());
+      const std::uint64_t done = ++generated;
+      if (omp_get_thread_num() == 0) report(done);
     });
   });
 }

@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "models/lps_material.hpp"
 #include "scenes/exact_moments.hpp"
+#include "scenes/scene_cost.hpp"
 #include "scenes/scene_runner.hpp"
 #include "solvers/linear_solver.hpp"
 
@@ -112,9 +113,12 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
 
 SceneModel::SceneModel(const SceneParameters& p) : impl_(std::make_unique<Impl>()) {
   validate(p);
+  checkSetUpLimits(p);
   Impl& m = *impl_;
   m.parameters = p;
+  if (p.progress) p.progress("setUp", 0, 1);
   m.runner = makeRunner(p);
+  if (p.progress) p.progress("setUp", 1, 1);
   const PointCloud& cloud = m.runner->cloud();
   for (std::size_t q : cloud.domain) {
     m.x.push_back(cloud.x[q]);

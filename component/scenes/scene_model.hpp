@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/progress.hpp"
 #include "geometry/point_cloud.hpp"
 
 namespace peristep {
@@ -27,6 +28,13 @@ enum class SceneId : std::int64_t {
 enum class XiDistribution : std::int32_t { Normal = 0, Uniform = 1, Unused = 2 };
 
 enum class Covariance { Exponential, Gaussian };
+
+// Bounds on the work an instance may start, checked against estimates before the work begins; 0: none.
+struct WorkLimits {
+  double memoryBytes = 0;           // estimated peak memory of the set-up (scenes/scene_cost.hpp)
+  double setUpSeconds = 0;          // estimated run time of the set-up
+  std::uint64_t internalSteps = 0;  // dynamic scenes: internal time steps of one advance
+};
 enum class FieldTransform { Affine, Exponential };
 
 struct SceneParameters {
@@ -51,6 +59,8 @@ struct SceneParameters {
   std::string timeIntegrator = "central_difference";
   double internalTimeStep = 0;      // [s]
   double integratorTolerance = 1e-6;
+  WorkLimits limits;
+  ProgressHook progress;            // optional: told how far long set-ups and steps have come
 };
 
 // Scenes 5-7 integrate the equation of motion in time; the others are quasi-static.
@@ -78,12 +88,14 @@ XiDistribution xiDistribution(const SceneParameters& p, std::size_t k);
 // the square roots of its variances: SceneModel::xiScales).
 double xiScale(SceneId scene, std::size_t k);
 
-// Throws InvalidInput naming the offending parameter; does no work.
+// Throws InvalidInput naming the offending parameter; does no work (the limits are checked by
+// checkSetUpLimits in scenes/scene_cost.hpp).
 void validate(const SceneParameters& p);
 
 class SceneModel {
  public:
-  // Validates, builds geometry and quadrature, assembles and factorizes.
+  // Validates, checks the estimated cost against p.limits, builds geometry and quadrature, assembles
+  // and factorizes.
   explicit SceneModel(const SceneParameters& p);
   ~SceneModel();
   SceneModel(const SceneModel&) = delete;

@@ -1,0 +1,155 @@
+#include "scenes/scene_cost.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/errors.hpp"
+#include "scenes/microstructure.hpp"
+
+namespace peristep {
+namespace {
+
+// Rates and sizes the models below are calibrated with (2 threads, Release build).
+constexpr double kFlopsPerSecond = 4e9;       // UMFPACK at 201k unknowns: 1.1e11 flop in 26 s
+constexpr double kBytesPerFactorEntry = 40;   // UMFPACK working memory per estimated factor entry
+constexpr double kBytesPerBond = 40;          // neighbour index, weight, bond state
+constexpr double kBytesPerMatrixEntry = 48;   // assembly pieces and the CSR copies of A and B
+constexpr double kFlopsPerBond = 200;         // neighbour search, weights, assembly per bond
+constexpr double kFlopsPerCrystalCheck = 25;  // one grid point tested against one ellipse
+
+std::string text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g", x);
+  return buf;
+}
+
+struct Part {
+  double bytes = 0, flops = 0;
+  std::string what;
+};
+
+// The quasi-static LPS set-up on the collared grid: bonds, assembly and one sparse LU factorization.
+// Unknowns: u at the domain points, theta at every point within a horizon of the domain. The
+// factorization follows nested dissection on a 2D grid, whose top separator is a band 2 delta wide
+// across the domain (3 unknowns per point): about 1.1 s^3 flops and 6 s^2 factor entries (66k
+// unknowns: 21 GFlop measured, 18 estimated; 201k: 26 s measured, 27 estimated). Where the separator
+// holds half the unknowns or more, dissection gains nothing and the factors are dense (deltaOverH = 20
+// on 33 x 33: 73 s reported in issue 13, 70 estimated).
+Part lpsSetUp(const GridSpec& g) {
+  const double deltaOverH = g.deltaOverH, nx = static_cast<double>(g.nx), ny = static_cast<double>(g.ny);
+  const double layers = std::ceil(2.0 * deltaOverH - 1e-9), inner = std::ceil(deltaOverH - 1e-9);
+  const double points = (nx + 2 * layers) * (ny + 2 * layers), domain = nx * ny;
+  const double neighbours = std::numbers::pi * deltaOverH * deltaOverH;
+  const double unknowns = 2 * domain + (nx + 2 * inner) * (ny + 2 * inner);
+  const double entries = 8 * neighbours * domain;
+  const double separator = 3 * std::sqrt(domain) * 2 * deltaOverH;
+  const bool dense = 2 * separator >= unknowns;
+  const double factorFlops = dense ? 2.0 / 3.0 * std::pow(unknowns, 3) : 1.1 * std::pow(separator, 3);
+  const double factorEntries = dense ? unknowns * unknowns : 6 * separator * separator;
+  Part p;
+  p.bytes = kBytesPerBond * points * neighbours + kBytesPerMatrixEntry * entries + kBytesPerFactorEntry * factorEntries;
+  p.flops = kFlopsPerBond * points * neighbours + factorFlops;
+  p.what = "the factorization of about " + text(unknowns) + " unknowns (" + text(factorFlops) + " flop, " +
+           text(kBytesPerFactorEntry * factorEntries) + " bytes)";
+  return p;
+}
+
+// Crystals placed until the fraction f is reached (000 Sec. 5): a Boolean model covers 1 - exp(-N a/A)
+// of the plate with N ellipses of area a, so N = -ln(1 - f) A / a; each ellipse tests the grid points
+// within its semi-major axis.
+Part microstructure(const SceneParameters& p, double realizations) {
+  const EllipseShape e;
+  const double f = std::min(p.crystalFraction, 0.999);
+  const double h = p.grid.h(), reach = std::ceil(e.semiMajor / h) + 1;
+  const double crystals = -std::log1p(-f) * p.grid.Lx * p.grid.Ly / (std::numbers::pi * e.semiMajor * e.semiMinor);
+  Part m;
+  m.flops = realizations * crystals * (2 * reach + 1) * (2 * reach + 1) * kFlopsPerCrystalCheck;
+  m.what = "placing about " + text(crystals) + " crystals of 12 x 7.5 um on the " + text(p.grid.Lx) + " x " +
+           text(p.grid.Ly) + " m plate" + (realizations > 1 ? " in each of " + text(realizations) + " realizations" : "");
+  return m;
+}
+
+// The streamed PCA (random/microstructure_pca.hpp): q + 2 passes over n realizations, two block
+// products of M x (k + p) per realization and pass, at about a third of the LU's flop rate.
+Part pca(const SceneParameters& p) {
+  const double layers = std::ceil(2.0 * p.grid.deltaOverH - 1e-9);
+  const double M = (static_cast<double>(p.grid.nx) + 2 * layers) * (static_cast<double>(p.grid.ny) + 2 * layers);
+  const double n = static_cast<double>(p.pcaRealizations), l = static_cast<double>(p.xi.size()) + 20, passes = 8;
+  Part m = microstructure(p, n * passes);
+  m.flops += 3 * passes * n * 2 * M * l;
+  m.bytes = 8 * M * (4 * l + 64);
+  m.what = "the PCA of " + text(n) + " realizations (" + m.what + ")";
+  return m;
+}
+
+// The KL modes on every point (random/kl_field.hpp): dense ~9 N^3 up to 1200 points, else 6 passes of
+// N^2 kernel evaluations (~20 flop) times the block of k + 20 columns.
+Part klField(const SceneParameters& p) {
+  const double layers = std::ceil(2.0 * p.grid.deltaOverH - 1e-9);
+  const double N = (static_cast<double>(p.grid.nx) + 2 * layers) * (static_cast<double>(p.grid.ny) + 2 * layers);
+  const double l = static_cast<double>(p.xi.size()) + 20;
+  Part m;
+  m.flops = N <= 1200 ? 9 * N * N * N : 6 * N * N * (20 + 2 * l);
+  m.bytes = N <= 1200 ? 24 * N * N : 8 * N * (4 * l + 128);
+  m.what = "the KL modes on " + text(N) + " points";
+  return m;
+}
+
+// The dynamic scenes: a cell-centred lattice with collars one horizon wide and the state-based bonds
+// (index, two directions, two weights); no factorization.
+Part dynamicSetUp(const GridSpec& g) {
+  const double collar = std::ceil(g.deltaOverH - 1e-9);
+  const double points = (static_cast<double>(g.nx) + 2 * collar) * (static_cast<double>(g.ny) + 2 * collar);
+  const double bonds = points * std::numbers::pi * g.deltaOverH * g.deltaOverH;
+  Part m;
+  m.bytes = 48 * bonds;
+  m.flops = 100 * bonds;
+  m.what = "the " + text(bonds) + " bonds of the lattice";
+  return m;
+}
+
+}  // namespace
+
+CostEstimate estimateSetUp(const SceneParameters& p) {
+  std::vector<Part> parts;
+  if (isDynamic(p.scene)) {
+    parts.push_back(dynamicSetUp(p.grid));
+  } else {
+    parts.push_back(lpsSetUp(p.grid));
+    if (p.scene == SceneId::GlassCeramic)
+      parts.push_back(p.pcaRealizations > 0 ? pca(p) : microstructure(p, 1));
+    if (p.scene == SceneId::KlPlate) parts.push_back(klField(p));
+  }
+  CostEstimate e;
+  const Part *memory = &parts.front(), *time = &parts.front();
+  for (const Part& part : parts) {
+    e.bytes += part.bytes;
+    e.seconds += part.flops / kFlopsPerSecond;
+    if (part.bytes > memory->bytes) memory = &part;
+    if (part.flops > time->flops) time = &part;
+  }
+  e.mostMemory = memory->what;
+  e.mostTime = time->what;
+  return e;
+}
+
+void checkSetUpLimits(const SceneParameters& p) {
+  const WorkLimits& l = p.limits;
+  if (l.memoryBytes <= 0 && l.setUpSeconds <= 0) return;
+  const CostEstimate e = estimateSetUp(p);
+  const std::string change = "use a coarser grid (nx, ny), a smaller deltaOverH" +
+                             std::string(p.scene == SceneId::GlassCeramic ? ", a smaller plate or fewer pcaRealizations"
+                                                                          : "");
+  if (l.memoryBytes > 0 && e.bytes > l.memoryBytes)
+    throw InvalidInput("the scene set-up would need about " + text(e.bytes) + " bytes of memory (mostly " +
+                       e.mostMemory + ") but memoryBudget = " + text(l.memoryBytes) + " bytes; " + change +
+                       ", or raise memoryBudget");
+  if (l.setUpSeconds > 0 && e.seconds > l.setUpSeconds)
+    throw InvalidInput("the scene set-up would take about " + text(e.seconds) + " s (mostly " + e.mostTime +
+                       ") but setUpTimeLimit = " + text(l.setUpSeconds) + " s; " + change +
+                       ", or raise setUpTimeLimit");
+}
+
+}  // namespace peristep
