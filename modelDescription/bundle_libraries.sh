@@ -48,7 +48,9 @@ copyright() {  # copies a package's copyright file once; fails if the system was
 index=$licenses/license.txt.tmp
 {
   echo "PeriStep.fmu: licences of the third-party code it contains."
-  echo "Each file <package>.txt here is the Debian 12 copyright file of that package."
+  echo "Each file <package>.txt here is the Debian 12 copyright file of that package; the corresponding"
+  echo "source is that package's Debian source at the version named (apt-get source <package>=<version>,"
+  echo "or snapshot.debian.org)."
   echo
   echo "Shared libraries in binaries/x86_64-linux (loaded by PeriStep.so through its run path \$ORIGIN):"
 } >"$index"

@@ -5,7 +5,8 @@
 #     (the loader's --list, which is what ldd runs), inside that root and on this system alike;
 #   - is opened, instantiated and stepped through the FMI 3.0 C ABI by examples/c/embed.c there,
 # while the bare PeriStep.so of the build, in the same root, fails to load (so the root really hides
-# the system's libraries). Every bundled library is needed and named in documentation/licenses.
+# the system's libraries). Every bundled library is needed and named in documentation/licenses, and
+# none needs a glibc newer than 2.35 or a libstdc++ newer than GCC 11's.
 #
 #   fmu_self_contained_test.sh <cmake> <PeriStep.fmu> <embed program> <built PeriStep.so>
 set -euo pipefail
@@ -21,7 +22,8 @@ fail() {
   exit 1
 }
 
-# What may stay outside the archive: glibc (with its loader and the vDSO) and the C++ runtime.
+# What may stay outside the archive: glibc (with its loader and the vDSO) and the C++ runtime; written
+# out here rather than taken from modelDescription/bundle_libraries.sh, so that this checks the script.
 runtime='^(linux-vdso\.so\.1|ld-linux-x86-64\.so\.2|libc\.so\.6|libm\.so\.6|libdl\.so\.2|libpthread\.so\.0|librt\.so\.1|libstdc\+\+\.so\.6|libgcc_s\.so\.1)$'
 loader=/lib64/ld-linux-x86-64.so.2
 binaries=fmu/binaries/x86_64-linux  # relative to the root
@@ -90,6 +92,16 @@ for file in "$root/$binaries"/*; do
   [ -n "$package" ] || fail "$name is not listed in documentation/licenses/license.txt"
   [ -s "$licenses/$package.txt" ] || fail "no copyright file $package.txt for $name"
 done
+
+# What the binaries need of the system (the README states it): glibc >= 2.35, libstdc++ of GCC >= 11.
+newest() {  # <symbol version prefix>: the highest such version any shipped binary refers to
+  objdump -T "$root/$binaries"/* | grep -o "($1[0-9.]*)" | tr -d '()' | sort -V | tail -n1
+}
+glibc=$(newest GLIBC_) glibcxx=$(newest GLIBCXX_)
+echo "newest symbol versions needed: $glibc, $glibcxx"
+[ "$(printf '%s\n' "$glibc" GLIBC_2.35 | sort -V | tail -n1)" = GLIBC_2.35 ] || fail "needs $glibc > GLIBC_2.35"
+[ "$(printf '%s\n' "$glibcxx" GLIBCXX_3.4.29 | sort -V | tail -n1)" = GLIBCXX_3.4.29 ] ||
+  fail "needs $glibcxx > GLIBCXX_3.4.29 (GCC 11)"
 
 # The control: without the archive's libraries beside it, PeriStep.so cannot be loaded in the root.
 if control=$(in_root /bin/embed /control/PeriStep.so 2>&1); then
