@@ -3,7 +3,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake g++ make pkg-config libeigen3-dev libsundials-dev libhdf5-dev zlib1g-dev libxml2-dev catch2
+packages=(cmake g++ make pkg-config patchelf libeigen3-dev libsundials-dev libhdf5-dev zlib1g-dev libxml2-dev catch2
           libopenblas-dev libsuitesparse-dev libzip-dev libtomlplusplus-dev libcli11-dev libpng-dev
           python3 python3-numpy gnuplot-nox)
 missing=()
