@@ -48,6 +48,12 @@ int main(int argc, char** argv) {
   sampleCmd->add_option("--fmu", sample.fmu, fmuHelp)->capture_default_str();
   sampleCmd->add_option("--out", sample.out, "HDF5 study file (default: <scene>_<rule>.h5); CSV beside it");
   sampleCmd->add_flag("-v,--verbose", sample.verbose, "echo every message the component logs");
+  sampleCmd->add_option("--shard", sample.shard,
+                        "K/N: run only samples K, K+N, K+2N, ... (1 <= K <= N) of every level and store them; "
+                        "no statistics (for batch arrays without MPI)");
+  sampleCmd->add_flag("--merge", sample.merge,
+                      "run no sample: statistics and result files from the stored samples (after --shard runs)")
+      ->excludes("--shard");
 
   try {
     app.parse(argc, argv);

@@ -6,7 +6,6 @@
 #include "host_errors.hpp"
 #include "result_layout.hpp"
 #include "sampling/monte_carlo.hpp"
-#include "sampling/sparse_grid.hpp"
 #include "sampling/tensor_grid.hpp"
 #include "simulation.hpp"
 
@@ -88,6 +87,9 @@ LevelPlan planLevel(const SamplingOptions& options, const RandomSpace& space, st
   LevelPlan plan;
   try {
     plan.set = pointsOf(options, space, level);
+    if (options.rule == SampleRule::Smolyak)
+      plan.projection = sampling::sparsePseudoSpectral(
+          space.laws, static_cast<int>(level), options.nested ? sampling::Family::Nested : sampling::Family::Gauss);
   } catch (const std::logic_error& e) {  // the rules refuse a level they do not have, or a grid too large
     throw InputError("level " + std::to_string(level) + ": " + e.what());
   }

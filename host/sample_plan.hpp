@@ -9,6 +9,7 @@
 #include "fmu_instance.hpp"
 #include "sampling/sample_set.hpp"
 #include "sampling/rule1d.hpp"
+#include "sampling/sparse_grid.hpp"
 #include "scene_file.hpp"
 
 namespace peristep::host {
@@ -44,6 +45,8 @@ struct SampleJob {
 struct LevelPlan {
   sampling::SampleSet set;     // points over the random coordinates only
   std::vector<SampleJob> jobs;  // one per point
+  // Smolyak: the sparse pseudo-spectral projection on the same points (variance as a sum of squares).
+  std::optional<sampling::SparseProjection> projection;
 };
 
 // Throws InputError for a rule the space cannot take (tensor or Smolyak without random coordinates).

@@ -1,5 +1,6 @@
 #include "sample_results.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -10,6 +11,17 @@
 namespace peristep::host {
 
 namespace {
+
+std::string momentsNote(const LevelResult& r) {
+  const std::size_t ok = r.records.size() - r.failures.size();
+  if (!r.momentsComputed)
+    return r.failures.size() == r.records.size()
+               ? "not computed: every sample failed"
+               : "not computed: " + std::to_string(r.failures.size()) +
+                     " sample(s) failed and the rule's weights do not allow dropping a node";
+  if (!r.failures.empty()) return "over the " + std::to_string(ok) + " successful samples, equal weights";
+  return "over all samples with the rule's weights";
+}
 
 void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const ResultLayout& layout) {
   const std::string name = "level_" + std::to_string(r.level);
@@ -34,16 +46,44 @@ void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const
     writeDataset(group, "seeds", {Q}, seeds.data());
   }
 
+  if (!r.failures.empty()) {
+    std::vector<std::uint64_t> failed;
+    std::string messages;
+    for (const SampleFailure& f : r.failures) failed.push_back(f.index + 1), messages += f.message + '\n';
+    writeAttribute(group, {"failedSamples", failed});  // 1-based job numbers; their rows are NaN
+    writeAttribute(group, {"failureMessages", messages});
+  }
+  writeAttribute(group, {"failed", std::vector<std::uint64_t>{r.failures.size()}});
+  writeAttribute(group, {"moments", momentsNote(r)});
+
+  // Every statistic in its own group, named for what it is; the group's "estimate" attribute says how.
+  const auto statistic = [&](const std::string& name, const std::string& estimate,
+                             std::vector<double> Moments::*member) {
+    if ((r.scalarMoments.*member).empty() && (r.fieldMoments.empty() || (r.fieldMoments.front().*member).empty()))
+      return;
+    Handle g(createGroup(group, name), H5Gclose, "create " + name);
+    writeAttribute(g, {"estimate", estimate});
+    for (std::size_t i = 0; i < layout.scalars.size(); ++i)
+      writeDataset(g, layout.scalars[i].name, {}, &(r.scalarMoments.*member)[i]);
+    for (std::size_t f = 0; f < layout.fields.size(); ++f)
+      writeDataset(g, layout.fields[f].name, layout.fields[f].shape, (r.fieldMoments[f].*member).data());
+  };
+  statistic("mean", "sum_k w_k q_k, 000:(3.10)", &Moments::mean);
+  statistic("std", "direct quadrature: sqrt(sum_k w_k (q_k - mean)^2), 000:(3.11), 0 where negative",
+            &Moments::std);
+  statistic("pce_std", "sparse pseudo-spectral surrogate (Constantine-Eldred-Phipps 2012): sqrt of the sum of the "
+            "squared non-constant coefficients", &Moments::pceStd);
+  statistic("se_mean", "Monte Carlo standard error of the mean: s/sqrt(Q), s^2 = sum (q_k - mean)^2/(Q-1); 95% "
+            "interval of the mean: mean -+ 1.96 se_mean", &Moments::seMean);
+  statistic("se_variance", "Monte Carlo standard error of std^2: sqrt((m4 - m2^2)/Q), m_j = sum (q_k - mean)^j/Q",
+            &Moments::seVar);
+  statistic("se_std", "Monte Carlo standard error of std: se_variance/(2 std) (delta method)", &Moments::seStd);
+
   Handle samples(createGroup(group, "samples"), H5Gclose, "create samples");
-  Handle mean(createGroup(group, "mean"), H5Gclose, "create mean");
-  Handle sd(createGroup(group, "std"), H5Gclose, "create std");
   for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
     std::vector<double> v;
     for (const SampleRecord& s : r.records) v.push_back(s.scalars[i]);
-    const std::string& n = layout.scalars[i].name;
-    writeDataset(samples, n, {Q}, v.data());
-    writeDataset(mean, n, {}, &r.scalarMoments.mean[i]);
-    writeDataset(sd, n, {}, &r.scalarMoments.std[i]);
+    writeDataset(samples, layout.scalars[i].name, {Q}, v.data());
   }
   for (std::size_t f = 0; f < layout.fields.size(); ++f) {
     const ArrayInfo& info = layout.fields[f];
@@ -52,8 +92,6 @@ void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const
     std::vector<double> all;
     for (const SampleRecord& s : r.records) all.insert(all.end(), s.fields[f].begin(), s.fields[f].end());
     writeDataset(samples, info.name, shape, all.data());
-    writeDataset(mean, info.name, info.shape, r.fieldMoments[f].mean.data());
-    writeDataset(sd, info.name, info.shape, r.fieldMoments[f].std.data());
   }
 }
 
@@ -80,21 +118,32 @@ void writeStudyHdf5(const std::filesystem::path& file, const StudyDescription& s
 }
 
 void writeStudyCsv(const std::filesystem::path& file, const ResultLayout& layout, const std::vector<LevelResult>& levels) {
+  const SampleRule rule = levels.empty() ? SampleRule::Tensor : levels.front().rule;
   std::ofstream out(file);
-  out << "level,samples,computed,errorMean,errorStd,diffMean,diffStd,seconds";
-  for (const ArrayInfo& s : layout.scalars) out << ",mean_" << s.name << ",std_" << s.name;
+  out << "level,samples,computed,errorMean,errorStd,diffMean,diffStd,seconds,failed";
+  for (const ArrayInfo& s : layout.scalars) {
+    out << ",mean_" << s.name << ",std_" << s.name;
+    if (rule == SampleRule::Smolyak) out << ",pceStd_" << s.name;
+    if (rule == SampleRule::MonteCarlo) out << ",seMean_" << s.name << ",seStd_" << s.name << ",seVariance_" << s.name;
+  }
   out << '\n';
   char buf[64];
-  const auto num = [&](double v) {
+  const auto num = [&](double v) {  // empty for NaN: no value (moments not computed, Q = 1)
+    if (std::isnan(v)) return std::string();
     std::snprintf(buf, sizeof buf, "%.10g", v);
     return std::string(buf);
   };
   for (const LevelResult& r : levels) {
     const auto opt = [&](const std::optional<double>& v) { return v ? num(*v) : std::string(); };
     out << r.level << ',' << r.records.size() << ',' << r.computed << ',' << opt(r.errorMean) << ','
-        << opt(r.errorStd) << ',' << opt(r.diffMean) << ',' << opt(r.diffStd) << ',' << num(r.seconds);
-    for (std::size_t i = 0; i < layout.scalars.size(); ++i)
-      out << ',' << num(r.scalarMoments.mean[i]) << ',' << num(r.scalarMoments.std[i]);
+        << opt(r.errorStd) << ',' << opt(r.diffMean) << ',' << opt(r.diffStd) << ',' << num(r.seconds) << ','
+        << r.failures.size();
+    const Moments& m = r.scalarMoments;
+    for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
+      out << ',' << num(m.mean[i]) << ',' << num(m.std[i]);
+      if (rule == SampleRule::Smolyak) out << ',' << num(m.pceStd[i]);
+      if (rule == SampleRule::MonteCarlo) out << ',' << num(m.seMean[i]) << ',' << num(m.seStd[i]) << ',' << num(m.seVar[i]);
+    }
     out << '\n';
   }
   if (!out) throw RunError("cannot write " + file.string());

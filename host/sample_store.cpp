@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "host_errors.hpp"
 
 namespace peristep::host {
@@ -84,21 +86,52 @@ std::optional<SampleRecord> SampleStore::load(std::uint64_t key, std::size_t sca
   return r;
 }
 
-void SampleStore::save(std::uint64_t key, const SampleRecord& record) const {
-  const std::filesystem::path final = file(key), temporary = final.string() + ".tmp";
+namespace {
+
+// Writes under a temporary name unique to the process, host and pid (two processes may finish the same
+// sample), and renames: a reader sees the old state or the whole file.
+template <class Write>
+void writeAtomically(const std::filesystem::path& final, Write write) {
+  char host[256] = "";
+  ::gethostname(host, sizeof host - 1);
+  const std::filesystem::path temporary = final.string() + "." + host + "." + std::to_string(::getpid()) + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    write(out);
+    out.flush();
+    if (!out) throw RunError("cannot write " + temporary.string());
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, final, ec);
+  if (ec) throw RunError("cannot rename " + temporary.string() + ": " + ec.message());
+}
+
+}  // namespace
+
+void SampleStore::save(std::uint64_t key, const SampleRecord& record) const {
+  writeAtomically(file(key), [&](std::ofstream& out) {
     out.write(kMagic, sizeof kMagic);
     put(out, record.seconds);
     putVector(out, record.scalars);
     put(out, static_cast<std::uint64_t>(record.fields.size()));
     for (const auto& f : record.fields) putVector(out, f);
-    out.flush();
-    if (!out) throw RunError("cannot write " + temporary.string());
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, final, ec);  // atomic: a reader sees the old state or the whole sample
-  if (ec) throw RunError("cannot rename " + temporary.string() + ": " + ec.message());
+  });
+}
+
+std::filesystem::path SampleStore::failureFile(std::uint64_t key) const {
+  return std::filesystem::path(file(key)).replace_extension(".failed");
+}
+
+std::optional<std::string> SampleStore::failure(std::uint64_t key) const {
+  std::ifstream in(failureFile(key));
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void SampleStore::saveFailure(std::uint64_t key, const std::string& message) const {
+  writeAtomically(failureFile(key), [&](std::ofstream& out) { out << message; });
 }
 
 }  // namespace peristep::host

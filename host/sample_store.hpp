@@ -4,7 +4,10 @@
 // with this sample's coordinates, loading).
 // A file is written under a temporary name and renamed, so an interrupted study leaves only whole
 // samples; restarting the same command finds them and recomputes nothing. Samples shared by two
-// rules or levels (nested rules, the centre node) are computed once.
+// rules or levels (nested rules, the centre node) are computed once. Processes that share the
+// directory (MPI ranks, batch-array shards) share the samples.
+// A sample the component refused (fmi3Error) is kept as a text file with the message
+// (sample-<key>.failed): it is finished too, not retried on restart; delete the file to retry it.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -32,6 +35,11 @@ class SampleStore {
   // The record, or nothing when it is missing or does not match the expected shape (then recomputed).
   std::optional<SampleRecord> load(std::uint64_t key, std::size_t scalars, const std::vector<std::uint64_t>& fieldSizes) const;
   void save(std::uint64_t key, const SampleRecord& record) const;
+  // The message of a failed sample, or nothing.
+  std::optional<std::string> failure(std::uint64_t key) const;
+  void saveFailure(std::uint64_t key, const std::string& message) const;
+  // The file that holds (or will hold) a failed sample's message.
+  std::filesystem::path failureFile(std::uint64_t key) const;
   const std::filesystem::path& directory() const { return dir_; }
 
  private:

@@ -35,6 +35,8 @@ struct SampleOptions {
   bool nested = false;
   std::uint64_t seed = 1;
   bool verbose = false;
+  std::string shard;                   // "K/N": run only the K-th of N parts, write only samples
+  bool merge = false;                  // no sample run: statistics and files from the stored samples
 };
 
 int infoCommand(const InfoOptions& options);

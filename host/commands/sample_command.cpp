@@ -3,10 +3,16 @@
 // the rule's weights, errors against the exact moments where the component has them, and wall time,
 // per level. Finished samples are kept beside the result file, so an interrupted study restarted with
 // the same command recomputes none of them.
+// Under mpirun the ranks share each level's samples (dynamic scheduling, mpi_work_queue.hpp) and rank 0
+// writes the results; --shard K/N runs a fixed part for batch arrays, --merge the statistics afterwards.
+#include <chrono>
 #include <iostream>
+#include <utility>
 
 #include "../fmu_loader.hpp"
 #include "../host_errors.hpp"
+#include "../mpi_session.hpp"
+#include "../mpi_work_queue.hpp"
 #include "../progress.hpp"
 #include "../sample_results.hpp"
 #include "../sample_study.hpp"
@@ -33,30 +39,61 @@ std::string lawText(const RandomSpace& space) {
   return s;
 }
 
-void printLevels(const std::vector<LevelResult>& levels, const ResultLayout& layout, bool exact) {
-  std::vector<std::string> header{"level", "samples", "computed", "reused"};
+struct Shard {
+  std::size_t index = 0, count = 1;  // runs the jobs k with k % count == index (default: all)
+};
+
+Shard parseShard(const std::string& text) {
+  Shard shard;
+  const std::size_t slash = text.find('/');
+  try {
+    std::size_t used = 0;
+    const unsigned long k = std::stoul(text.substr(0, slash), &used);
+    const unsigned long n = std::stoul(text.substr(slash + 1));
+    if (slash == std::string::npos || used != slash || k < 1 || k > n) throw std::invalid_argument(text);
+    shard = {k - 1, n};
+  } catch (const std::logic_error&) {
+    throw InputError("--shard: expected K/N with 1 <= K <= N, got '" + text + "'");
+  }
+  return shard;
+}
+
+void printLevels(const std::vector<LevelResult>& levels, const ResultLayout& layout, bool exact, SampleRule rule) {
+  std::vector<std::string> header{"level", "samples", "computed", "reused", "failed"};
   if (exact) header.insert(header.end(), {"error mean", "error std"});
   const bool compared = levels.size() > 1;
   if (compared) header.insert(header.end(), {"to last: mean", "std"});
   header.push_back("wall s");
-  // Scalars that vary between the samples of the last level: their moments.
+  // Scalars that vary between the samples of the last level: their moments. Which standard deviation
+  // a column holds is in its header: "std" with the rule's weights 000:(3.11), "PCE std" of the sparse
+  // pseudo-spectral surrogate, "+-se" the Monte Carlo standard errors.
   std::vector<std::size_t> shown;
   for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
     bool varies = false;
     for (const SampleRecord& s : levels.back().records) varies |= s.scalars[i] != levels.back().records[0].scalars[i];
-    if (varies) shown.push_back(i), header.push_back("mean " + layout.scalars[i].name), header.push_back("std");
+    if (!varies) continue;
+    shown.push_back(i);
+    header.push_back("mean " + layout.scalars[i].name);
+    if (rule == SampleRule::MonteCarlo) header.push_back("+-se");
+    header.push_back(rule == SampleRule::Smolyak ? "std (quadrature)" : "std");
+    if (rule == SampleRule::MonteCarlo) header.push_back("+-se");
+    if (rule == SampleRule::Smolyak) header.push_back("PCE std");
   }
   std::vector<std::vector<std::string>> rows;
   for (const LevelResult& r : levels) {
     std::vector<std::string> row{std::to_string(r.level), std::to_string(r.records.size()), std::to_string(r.computed),
-                                 std::to_string(r.reused)};
-    if (exact) row.insert(row.end(), {formatNumber(*r.errorMean), formatNumber(*r.errorStd)});
-    if (compared)
-      row.insert(row.end(), {r.diffMean ? formatNumber(*r.diffMean) : "-", r.diffStd ? formatNumber(*r.diffStd) : "-"});
+                                 std::to_string(r.reused), std::to_string(r.failures.size())};
+    const auto opt = [](const std::optional<double>& v) { return v ? formatNumber(*v) : std::string("-"); };
+    if (exact) row.insert(row.end(), {opt(r.errorMean), opt(r.errorStd)});
+    if (compared) row.insert(row.end(), {opt(r.diffMean), opt(r.diffStd)});
     row.push_back(formatNumber(r.seconds, 3));
+    const Moments& m = r.scalarMoments;
     for (std::size_t i : shown) {
-      row.push_back(formatNumber(r.scalarMoments.mean[i]));
-      row.push_back(formatNumber(r.scalarMoments.std[i]));
+      row.push_back(formatNumber(m.mean[i]));
+      if (!m.seMean.empty()) row.push_back(formatNumber(m.seMean[i]));
+      row.push_back(formatNumber(m.std[i]));
+      if (!m.seStd.empty()) row.push_back(formatNumber(m.seStd[i]));
+      if (!m.pceStd.empty()) row.push_back(formatNumber(m.pceStd[i]));
     }
     rows.push_back(row);
   }
@@ -68,13 +105,38 @@ void printLevels(const std::vector<LevelResult>& levels, const ResultLayout& lay
     for (const Moments& m : r.fieldMoments) clamped += m.clamped;
     if (clamped > 0)
       std::cout << "level " << r.level << ": the variance estimate of " << clamped
-                << " output value(s) was negative (negative quadrature weights) and is reported as std = 0\n";
+                << " output value(s) was negative (negative quadrature weights) and is reported as std = 0"
+                << (rule == SampleRule::Smolyak ? "; the PCE std is a sum of squares and cannot be negative" : "")
+                << '\n';
   }
+  if (rule == SampleRule::MonteCarlo)
+    std::cout << "Monte Carlo: se(mean) = s/sqrt(Q); se(std) = se(variance)/(2 std), se(variance) = sqrt((m4 - "
+                 "m2^2)/Q); 95% interval of the mean: mean -+ 1.96 se(mean)\n";
 }
 
-}  // namespace
+// Failed samples: how many, which, and what the statistics of their level are.
+std::size_t printFailures(const std::vector<LevelResult>& levels, SampleRule rule) {
+  std::size_t total = 0;
+  for (const LevelResult& r : levels) {
+    if (r.failures.empty()) continue;
+    total += r.failures.size();
+    std::cout << "level " << r.level << ": " << r.failures.size() << " of " << r.records.size()
+              << " samples failed; "
+              << (rule == SampleRule::MonteCarlo
+                      ? "the moments are over the " + std::to_string(r.records.size() - r.failures.size()) +
+                            " successful samples (equal weights)"
+                      : std::string("no moments: the rule's weights do not allow dropping a node (NaN in the files)"))
+              << '\n';
+    for (const SampleFailure& f : r.failures) std::cout << "  " << f.message << '\n';
+  }
+  return total;
+}
 
-int sampleCommand(const SampleOptions& options) {
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   SamplingOptions rule;
   rule.rule = parseRule(options.rule);
   rule.nested = options.nested;
@@ -87,6 +149,11 @@ int sampleCommand(const SampleOptions& options) {
     throw InputError("--rule mc takes --samples, not --level");
   if (rule.rule != SampleRule::MonteCarlo && !options.samples.empty())
     throw InputError("--rule " + options.rule + " takes --level, not --samples");
+  const bool sharded = !options.shard.empty();
+  const Shard shard = sharded ? parseShard(options.shard) : Shard{};
+  if ((sharded || options.merge) && mpi.size() > 1)
+    throw InputError("--shard and --merge are for runs without MPI; under mpirun the ranks share the samples");
+  const bool root = mpi.rank() == 0, writes = root && !sharded;
 
   const OpenedFmu fmu(options.fmu);
   const Scene scene = loadScene(options.scene, fmu.md);
@@ -102,8 +169,11 @@ int sampleCommand(const SampleOptions& options) {
   instanceOptions.resourcePath = fmu.archive.resourcePath();
   instanceOptions.verbose = options.verbose;
   const RandomSpace space = readRandomSpace(library, fmu.md, scene, instanceOptions);
-  std::cout << "# " << options.scene << ": random coordinates " << lawText(space) << "; rule " << options.rule
-            << (rule.rule == SampleRule::Smolyak ? (options.nested ? " (nested)" : " (Gauss)") : "") << '\n';
+  if (root)
+    std::cout << "# " << options.scene << ": random coordinates " << lawText(space) << "; rule " << options.rule
+              << (rule.rule == SampleRule::Smolyak ? (options.nested ? " (nested)" : " (Gauss)") : "")
+              << (mpi.size() > 1 ? "; " + std::to_string(mpi.size()) + " MPI ranks" : "")
+              << (sharded ? "; shard " + options.shard : "") << (options.merge ? "; merging stored samples" : "") << '\n';
 
   SampleStudy study(library, fmu.md, scene, instanceOptions, store, SampleStore::fileDigest(binary));
   StudyDescription description{options.scene, options.rule,
@@ -111,22 +181,67 @@ int sampleCommand(const SampleOptions& options) {
                                 {"seed", std::vector<std::uint64_t>{options.seed}},
                                 {"sampleDirectory", store.directory().string()}}};
   std::vector<LevelResult> levels;
+  LevelWork shardWork;
   for (std::uint64_t level : rule.levels) {
-    ProgressBar bar("level " + std::to_string(level), 1);
-    LevelResult r = study.runLevel(rule, space, level, [&](std::size_t done, std::size_t total) {
-      bar.update(0, std::to_string(done) + "/" + std::to_string(total) + " samples");
-    });
+    const auto start = std::chrono::steady_clock::now();
+    LevelPlan plan = planLevel(rule, space, level);
+    LevelWork work;
+    if (!options.merge) {
+      ProgressBar bar("level " + std::to_string(level), 1);
+      const auto progress = [&](std::size_t index, std::size_t total) {
+        if (root) bar.update(0, "sample " + std::to_string(index) + "/" + std::to_string(total));
+      };
+      if (mpi.size() > 1) {
+        MpiWorkQueue queue(mpi, plan.jobs.size());
+        work = study.runJobs(plan, [&] { return queue.next(); }, progress);
+        queue.finish();
+        work = {mpi.sumToRoot(work.computed), mpi.sumToRoot(work.reused), mpi.sumToRoot(work.failed)};
+      } else {
+        std::size_t next = shard.index;
+        work = study.runJobs(plan, [&]() -> std::optional<std::size_t> {
+          if (next >= plan.jobs.size()) return std::nullopt;
+          return std::exchange(next, next + shard.count);
+        }, progress);
+      }
+    }
+    shardWork = {shardWork.computed + work.computed, shardWork.reused + work.reused, shardWork.failed + work.failed};
+    if (!writes) continue;
+    LevelResult r = study.collect(std::move(plan), rule.rule, level);
+    r.computed = work.computed;
+    r.reused = r.records.size() - work.computed;
+    r.seconds = secondsSince(start);
     levels.push_back(std::move(r));
     writeStudyHdf5(out, description, study.layout(), levels);  // finished levels are on disk at once
     writeStudyCsv(csv, study.layout(), levels);
   }
+  if (sharded) {
+    std::cout << "shard " << options.shard << ": computed " << shardWork.computed << " samples (" << shardWork.failed
+              << " failed), found " << shardWork.reused << " in " << store.directory().string()
+              << "; statistics: the same command with --merge instead of --shard once all shards are done\n";
+    return 0;
+  }
+  if (!root) return 0;
   compareWithLast(levels, study.layout());
   writeStudyHdf5(out, description, study.layout(), levels);
   writeStudyCsv(csv, study.layout(), levels);
-  printLevels(levels, study.layout(), study.hasExactMoments());
+  printLevels(levels, study.layout(), study.hasExactMoments(), rule.rule);
+  const std::size_t failed = printFailures(levels, rule.rule);
   std::cout << "wrote " << out.string() << " and " << csv.string() << " (samples kept in " << store.directory().string()
             << ")\n";
-  return 0;
+  return failed > 0 ? kExitRunError : 0;
+}
+
+}  // namespace
+
+int sampleCommand(const SampleOptions& options) {
+  const MpiSession mpi;
+  try {
+    return runStudy(options, mpi);
+  } catch (const std::exception& e) {
+    // One rank's error would leave the others waiting for it: end them all, with this rank's message.
+    if (mpi.size() > 1) mpi.abort(e.what(), dynamic_cast<const InputError*>(&e) ? kExitInputError : kExitRunError);
+    throw;
+  }
 }
 
 }  // namespace peristep::host

@@ -22,4 +22,27 @@ Rule1D sparseGridRule(Law law, int level, Family family);
 // std::invalid_argument for a negative level or a nested level beyond nestedMaxLevel.
 SampleSet smolyakGrid(std::span<const Law> laws, int level, Family family = Family::Gauss);
 
+// Polynomial degree integrated exactly by sparseGridRule(law, level, family).
+int sparseGridRuleDegree(Law law, int level, Family family);
+
+// Sparse pseudo-spectral projection (Constantine, Eldred, Phipps 2012, "Sparse pseudospectral
+// approximation method"): the combination technique of smolyakGrid applied to tensor pseudo-spectral
+// projections instead of tensor quadratures,
+//   f ~ sum_a c_a Psi_a,  c_a = sum_i coef_i sum_{x in tensor rule i} w(x) f(x) Psi_a(x),
+// Psi_a = prod_d p_{a_d} the orthonormal Hermite/Legendre products. Tensor rule i keeps only the a it
+// integrates Psi_a Psi_b exactly for, a_d <= degree(i_d)/2, so each tensor projection is a true
+// projection (CEP 2012 Sec. 3); their combination, unlike the combined quadrature of f^2, yields
+// Var[f] ~ sum_{a != 0} c_a^2 >= 0. c_0 is the Smolyak quadrature of f.
+// The linear map samples -> coefficients, terms sorted by (coefficient, sample); the samples are
+// indexed as in smolyakGrid(laws, level, family). Coefficient 0 is a = 0.
+struct SpectralTerm {
+  std::size_t coefficient, sample;
+  double factor;
+};
+struct SparseProjection {
+  std::size_t coefficients = 0;
+  std::vector<SpectralTerm> terms;
+};
+SparseProjection sparsePseudoSpectral(std::span<const Law> laws, int level, Family family = Family::Gauss);
+
 }  // namespace peristep::sampling
