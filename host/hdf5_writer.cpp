@@ -50,6 +50,33 @@ void appendRecord(hid_t dataset, std::uint64_t step, const double* data, const s
   check(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, memSpace, fileSpace, H5P_DEFAULT, data), "write " + what);
 }
 
+// One block of a virtual dataset: `count` elements at `start` of the view are those at
+// `sourceStart` of the dataset `source` in this same file, taken in row-major order.
+struct ViewBlock {
+  std::vector<hsize_t> start, count;
+  std::string source;
+  std::vector<hsize_t> sourceStart, sourceCount;
+};
+
+void createView(hid_t file, const std::string& path, const std::vector<hsize_t>& dims, const std::vector<ViewBlock>& blocks) {
+  Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose,
+               "create the dataspace of " + path);
+  Handle props(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "create dataset properties");
+  for (const ViewBlock& b : blocks) {
+    Handle view(H5Scopy(space), H5Sclose, "copy a dataspace");
+    check(H5Sselect_hyperslab(view, H5S_SELECT_SET, b.start.data(), nullptr, b.count.data(), nullptr), "select in " + path);
+    // The source's current extent: a step's view is created right after the step is written.
+    Handle sourceSet(H5Dopen2(file, b.source.c_str(), H5P_DEFAULT), H5Dclose, "open " + b.source);
+    Handle source(H5Dget_space(sourceSet), H5Sclose, "query " + b.source);
+    check(H5Sselect_hyperslab(source, H5S_SELECT_SET, b.sourceStart.data(), nullptr, b.sourceCount.data(), nullptr),
+          "select in " + b.source);
+    check(H5Pset_virtual(props, view, ".", b.source.c_str(), source), "map " + path + " to " + b.source);
+  }
+  Handle links(H5Pcreate(H5P_LINK_CREATE), H5Pclose, "create link properties");
+  check(H5Pset_create_intermediate_group(links, 1), "allow intermediate groups");
+  Handle set(H5Dcreate2(file, path.c_str(), H5T_IEEE_F64LE, space, links, props, H5P_DEFAULT), H5Dclose, "create " + path);
+}
+
 }  // namespace
 
 Hdf5Writer::Hdf5Writer(const std::filesystem::path& file, const ResultLayout& layout) : file_(file), layout_(layout) {
@@ -75,6 +102,11 @@ Hdf5Writer::Hdf5Writer(const std::filesystem::path& file, const ResultLayout& la
             "write /grid/" + a.name);
       describe(data, a);
     }
+
+    // x and y interleaved for the XDMF geometry.
+    const hsize_t ny = layout.ny, nx = layout.nx;
+    createView(fileId_, xdmfGeometryPath(), {ny, nx, 2},
+               {{{0, 0, 0}, {ny, nx, 1}, "/grid/x", {0, 0}, {ny, nx}}, {{0, 0, 1}, {ny, nx, 1}, "/grid/y", {0, 0}, {ny, nx}}});
 
     series_.push_back(createSeries(fileId_, "/time", {}));
     if (!layout.inputName.empty()) {
@@ -121,10 +153,16 @@ void Hdf5Writer::append(const StepValues& step) {
       throw RunError(file_.string() + ": field " + layout_.fields[i].name + " changed its size");
     appendRecord(series_[k++], steps_, step.fields[i].data(), "/fields/" + layout_.fields[i].name);
   }
+  for (const ArrayInfo& f : layout_.fields) {
+    if (!layout_.onGrid(f)) continue;
+    const hsize_t ny = layout_.ny, nx = layout_.nx;
+    createView(fileId_, xdmfFieldPath(steps_, f.name), {ny, nx},
+               {{{0, 0}, {ny, nx}, "/fields/" + f.name, {steps_, 0, 0}, {1, ny, nx}}});
+  }
   // Flushed per step: whatever the next step does, the steps already written stay readable.
   check(H5Fflush(fileId_, H5F_SCOPE_GLOBAL), "flush " + file_.string());
   ++steps_;
-  times_.push_back(step.time);
+  history_.push_back({step.time, step.input, step.scalars});
 }
 
 }  // namespace peristep::host

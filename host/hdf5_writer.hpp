@@ -6,6 +6,8 @@
 //   /scalars/<name>    scalar outputs, [steps]
 //   /fields/<name>     array outputs, [steps][shape...] (ux, uy, damage: [steps][ny][nx]),
 //                      chunked per step, shuffled and deflate-compressed
+//   /xdmf/xy, /xdmf/step_<k>/<field>   views for the XDMF file (virtual datasets, no data of their own:
+//                      see result_layout.hpp)
 //   attributes: on "/" the run's provenance, on /parameters every parameter as used,
 //               on each dataset its unit and description.
 // Every time-dependent dataset is extendible along steps; the file is flushed after each step.
@@ -27,7 +29,7 @@ class Hdf5Writer {
 
   void append(const StepValues& step);
   std::uint64_t steps() const { return steps_; }
-  const std::vector<double>& times() const { return times_; }
+  const std::vector<StepScalars>& history() const { return history_; }
   // Closes the file (also done by the destructor); afterwards nothing may be appended.
   void close();
 
@@ -37,7 +39,7 @@ class Hdf5Writer {
   std::int64_t fileId_ = -1;
   std::vector<std::int64_t> series_;  // time, input (if any), scalars, fields: in this order
   std::uint64_t steps_ = 0;
-  std::vector<double> times_;
+  std::vector<StepScalars> history_;
 };
 
 }  // namespace peristep::host

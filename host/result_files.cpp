@@ -40,16 +40,16 @@ fs::path ResultFiles::xdmfFile() const { return xmfOf(final_); }
 
 void ResultFiles::append(const StepValues& step) {
   writer_->append(step);
-  writeXdmf(xmfOf(partial_), layout_, partial_.filename().string(), writer_->times());
+  writeXdmf(xmfOf(partial_), layout_, partial_.filename().string(), writer_->history());
 }
 
 void ResultFiles::commit() {
-  const std::vector<double> times = writer_->times();
+  const std::vector<StepScalars> steps = writer_->history();
   writer_->close();
   std::error_code ec;
   fs::rename(partial_, final_, ec);
   if (ec) throw RunError(final_.string() + ": cannot move the results into place: " + ec.message());
-  writeXdmf(xmfOf(final_), layout_, final_.filename().string(), times);
+  writeXdmf(xmfOf(final_), layout_, final_.filename().string(), steps);
   fs::remove(xmfOf(partial_), ec);
   done_ = true;
 }

@@ -40,6 +40,22 @@ struct ResultLayout {
   bool onGrid(const ArrayInfo& a) const { return a.shape.size() == 2 && a.shape[0] == ny && a.shape[1] == nx; }
 };
 
+// What ParaView's XDMF readers are pointed at: HDF5 virtual datasets that map into the arrays above and
+// hold no data of their own. Neither of ParaView 5.11's readers can select one step of a
+// [steps][ny][nx] dataset (XDMF 2 applies its own extent selection on top of a HyperSlab item; XDMF 3
+// leaves the HyperSlab's type unset and skips the array), and XDMF 3 reads no X_Y geometry; a plain
+// dataset per step and an interleaved [ny][nx][2] geometry work with both.
+inline std::string xdmfGeometryPath() { return "/xdmf/xy"; }
+inline std::string xdmfFieldPath(std::uint64_t step, const std::string& name) {
+  return "/xdmf/step_" + std::to_string(step + 1) + "/" + name;  // step 0 is the first one recorded
+}
+
+// The scalar part of one step: what the XDMF file holds inline and the history plot draws.
+struct StepScalars {
+  double time = 0, input = 0;
+  std::vector<double> scalars;
+};
+
 // Values recorded after one fmi3DoStep, in the order of ResultLayout::scalars and ::fields.
 struct StepValues {
   double time = 0;   // communication point reached by the step

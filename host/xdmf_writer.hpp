@@ -1,8 +1,8 @@
 #pragma once
-// The XDMF 3 sidecar that lets ParaView open an HDF5 result file: a temporal collection with one
-// 2D structured grid (2DSMesh, X_Y geometry from /grid/x and /grid/y) per step; each field on the
-// grid is a node attribute selected from /fields/<name> by a hyperslab, each scalar output a
-// grid-centred attribute from /scalars/<name>.
+// The XDMF sidecar that lets ParaView open an HDF5 result file with either of its XDMF readers: a
+// temporal collection with one 2D structured grid (2DSMesh, XY geometry from /xdmf/xy) per step; each
+// field on the grid is a node attribute read from that step's view /xdmf/step_<k>/<name>, the ramped
+// input and each scalar output a grid-centred attribute (field data in ParaView) written inline.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,10 +12,10 @@
 namespace peristep::host {
 
 // hdf5File is written into the DataItems as given: pass a name relative to the .xmf file.
-std::string xdmfDocument(const ResultLayout& layout, const std::string& hdf5File, const std::vector<double>& times);
+std::string xdmfDocument(const ResultLayout& layout, const std::string& hdf5File, const std::vector<StepScalars>& steps);
 
 // Writes the document through a temporary file and a rename, so a reader never sees half of it.
 void writeXdmf(const std::filesystem::path& file, const ResultLayout& layout, const std::string& hdf5File,
-               const std::vector<double>& times);
+               const std::vector<StepScalars>& steps);
 
 }  // namespace peristep::host

@@ -190,9 +190,27 @@ TEST_CASE("results: the XDMF parses and points at datasets that exist with the s
     }
     CHECK(prop(item, "Dimensions") == dims);
   }
-  // Per step: x, y, the field and two scalars.
-  CHECK(hdfItems == 2 * 5);
+  // Per step: the geometry and the field; the input and the scalars are written inline.
+  CHECK(hdfItems == 2 * 2);
   H5Fclose(f);
+
+  // The views ParaView reads are the step's record and the interleaved coordinates.
+  const hid_t g = openHdf5(dir / "run.h5");
+  const Dataset ux2 = readDataset(g, xdmfFieldPath(1, "ux"));
+  CHECK(ux2.shape == std::vector<hsize_t>{3, 4});
+  CHECK(ux2.values == stepValues(2).fields[0]);
+  const Dataset xy = readDataset(g, xdmfGeometryPath());
+  CHECK(xy.shape == std::vector<hsize_t>{3, 4, 2});
+  CHECK(xy.values[2 * 5] == 0.5);      // x of row 1, column 1
+  CHECK(xy.values[2 * 11 + 1] == 1.0); // y of row 2
+  H5Fclose(g);
+  std::vector<xmlNode*> attributes;
+  collect(root, "Attribute", attributes);
+  REQUIRE(attributes.size() == 2 * 4);  // per step: ux, loadFactor, errorL2, reactionForce
+  CHECK(prop(attributes[5], "Name") == "loadFactor");
+  CHECK(prop(attributes[5], "Center") == "Grid");
+  CHECK(std::stod(content(attributes[5])) == 0.5);
+  CHECK(std::stod(content(attributes[7])) == -4.0);
 }
 
 TEST_CASE("results: a failing run leaves an earlier result untouched and keeps its finished steps",
@@ -214,7 +232,7 @@ TEST_CASE("results: a failing run leaves an earlier result untouched and keeps i
     H5Fclose(f);
     XmlDoc xmf(dir / "run.partial.xmf");
     CHECK(xmf.doc != nullptr);
-    CHECK_THAT(readText(dir / "run.partial.xmf"), Catch::Matchers::Contains("run.partial.h5:/fields/ux"));
+    CHECK_THAT(readText(dir / "run.partial.xmf"), Catch::Matchers::Contains("run.partial.h5:" + xdmfFieldPath(1, "ux")));
   }
   SECTION("failure before the first step: nothing is left behind") {
     { ResultFiles files(dir / "run.h5", layout); }  // destroyed without commit
