@@ -40,20 +40,9 @@ static inline double pairStretch(const BondList& l, std::size_t k, const double*
 }
 
 void StateBasedModel::hydrostaticStrain(const double* u, double* theta) const {
-  const auto n = static_cast<std::ptrdiff_t>(points());
-  const StateBasedBonds& b = bonds_;
-#pragma omp parallel if (parallel_)
-  {
-    const FlushDenormals flush;
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t ii = 0; ii < n; ++ii) {
-      const auto i = static_cast<std::size_t>(ii);
-      const double ux = u[2 * i], uy = u[2 * i + 1];
-      double t = 0;
-      for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) t += b.ws[k] * pairStretch(b, k, u, ux, uy);
-      theta[i] = thetaScale_ * t;  // 001:(2): sum of omega_j J S |xi| V_j Vbar_ij/(pi eps^2)
-    }
-  }
+  // 001:(2): theta_i = sum of omega_j J S |xi| V_j Vbar_ij/(pi eps^2), in blocks as force() below.
+  const kernels::ForceArgs args = kernelArgs();
+  forEachBlock([&](std::size_t i0, std::size_t i1) { kernels::hydrostaticStrain(args, thetaScale_, i0, i1, u, theta); });
 }
 
 void StateBasedModel::updateHydrostatic(const double* u) {
@@ -63,27 +52,37 @@ void StateBasedModel::updateHydrostatic(const double* u) {
   for (std::ptrdiff_t i = 0; i < n; ++i) kg1_[i] = bonds_.kappa[i] * material_.g.slope(theta_[i]);
 }
 
-void StateBasedModel::force(const double* u, double* f) {
-  if (hydrostatic_) updateHydrostatic(u);
+kernels::ForceArgs StateBasedModel::kernelArgs() const {
   const StateBasedBonds& b = bonds_;
-  // 001:(14): 2/(pi eps^2) sum omega_i omega_j J/(eps |xi|) d/dS f(sqrt|xi| S) e V_j Vbar_ij, which with
-  // e = sqrt|xi| q and d/dS f = sqrt|xi| f'(r) is (4 c beta/(pi eps^3)) omega_i sum w r exp(-beta r^2) q.
-  // 001:(15): (1/(pi eps^4)) omega_i sum omega_j J [g'(theta_j) + g'(theta_i)] e V_j Vbar_ij.
-  const kernels::ForceArgs args{b.offset.data(), b.neighbour.data(), b.qx.data(), b.qy.data(), b.w.data(),
-                                b.ws.data(),     b.omega.data(),     material_.f.beta, tensileScale_, hydroScale_,
-                                hydrostatic_ ? kg1_.data() : nullptr};
-  // Blocks of points: each block is one call into the vectorized kernel.
+  return {b.offset.data(), b.neighbour.data(), b.qx.data(),  b.qy.data(),  b.w.data(),
+          b.ws.data(),     b.omega.data(),     material_.f.beta, tensileScale_, hydroScale_,
+          hydrostatic_ ? kg1_.data() : nullptr};
+}
+
+template <class Kernel>
+void StateBasedModel::forEachBlock(const Kernel& kernel) const {
+  // Blocks of points: each block is one call into a vectorized kernel.
   constexpr std::size_t block = 64;
-  const auto blocks = static_cast<std::ptrdiff_t>((points() + block - 1) / block);
+  const std::size_t n = points();
+  const auto blocks = static_cast<std::ptrdiff_t>((n + block - 1) / block);
 #pragma omp parallel if (parallel_)
   {
     const FlushDenormals flush;
 #pragma omp for schedule(static)
     for (std::ptrdiff_t k = 0; k < blocks; ++k) {
       const std::size_t i0 = static_cast<std::size_t>(k) * block;
-      kernels::stateBasedForce(args, i0, std::min(i0 + block, points()), u, f);
+      kernel(i0, std::min(i0 + block, n));
     }
   }
+}
+
+void StateBasedModel::force(const double* u, double* f) {
+  if (hydrostatic_) updateHydrostatic(u);
+  // 001:(14): 2/(pi eps^2) sum omega_i omega_j J/(eps |xi|) d/dS f(sqrt|xi| S) e V_j Vbar_ij, which with
+  // e = sqrt|xi| q and d/dS f = sqrt|xi| f'(r) is (4 c beta/(pi eps^3)) omega_i sum w r exp(-beta r^2) q.
+  // 001:(15): (1/(pi eps^4)) omega_i sum omega_j J [g'(theta_j) + g'(theta_i)] e V_j Vbar_ij.
+  const kernels::ForceArgs args = kernelArgs();
+  forEachBlock([&](std::size_t i0, std::size_t i1) { kernels::stateBasedForce(args, i0, i1, u, f); });
 }
 
 void StateBasedModel::tensileEnergyDensity(const double* u, double* e, PreCrack preCrack) const {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "models/state_based_bonds.hpp"
+#include "models/state_based_kernels.hpp"
 #include "models/state_based_material.hpp"
 #include "solvers/force_model.hpp"
 
@@ -41,6 +42,10 @@ class StateBasedModel final : public ForceModel {
 
  private:
   void updateHydrostatic(const double* u);  // theta_ and kg1_ = kappa g'(theta)
+  kernels::ForceArgs kernelArgs() const;
+  // kernel(i0, i1) over blocks of points, on the threads if parallel_, with denormals flushed.
+  template <class Kernel>
+  void forEachBlock(const Kernel& kernel) const;
 
   StateBasedMaterial material_;
   StateBasedBonds bonds_;
