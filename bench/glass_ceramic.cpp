@@ -2,17 +2,26 @@
 // shares, K_IC (000:(5.2)-(5.3)), wall time and peak memory; write the load-displacement curve as CSV.
 //
 //   glass_ceramic [--h-um 8] [--fraction 0.2] [--seed 1] [--max-load-um 1] [--step-um 0.004]
-//                 [--solver umfpack] [--csv curve.csv] [--png damage.png] [--checkpoint state.bin]
-//                 [--checkpoint-minutes 10]
+//                 [--solver umfpack] [--reference] [--csv curve.csv] [--png damage.png]
+//                 [--checkpoint state.bin] [--checkpoint-minutes 10]      (--help lists them)
 //
 // --checkpoint writes the run's state to that file (atomically) every 10 minutes or so, also inside a load
 // step between sub-iterations; a rerun with the same options continues from it, bit for bit, so a full-size
 // run can be spread over several sittings (under other options it refuses; remove the file to start
 // afresh). Wall time and the profile add up over the sittings.
 //
+// --reference runs the reference driver (a new factorization at every change of the matrix, no GMRES);
+// the "crack history" hash printed at the end is equal for two runs exactly when they broke the same
+// bonds in the same order at every load step.
+//
+// The "factorization ratio" is the run's wall time over the wall time of one numeric factorization of the
+// initial matrix, timed at start-up in the same process: a measure of the driver that the machine's speed
+// and load mostly cancel from.
+//
 // --png draws the final damage over the microstructure with the host's colours (the picture
 // `peristep run` leaves), so one long run yields both the numbers and the picture.
 // h = 2 um is the paper's full size (413 x 213 = 87969 points with the collar).
+#include <CLI/CLI.hpp>
 #include <malloc.h>
 
 #include <cmath>
@@ -29,15 +38,36 @@
 #include "core/memory.hpp"
 #include "core/timer.hpp"
 #include "scenes/glass_ceramic.hpp"
+#include "solvers/linear_solver.hpp"
 
 using namespace peristep;
 
 namespace {
 
+constexpr std::uint64_t kFnvOffset = 14695981039346656037ull;
+
+// FNV-1a over 64-bit words. Bonds only break, so the broken list at the end and its length after every
+// load step together are the whole crack history.
+std::uint64_t fnv1a(std::uint64_t h, std::uint64_t word) {
+  for (int b = 0; b < 8; ++b) h = (h ^ ((word >> (8 * b)) & 0xff)) * 1099511628211ull;
+  return h;
+}
+
+// Wall seconds of one numeric factorization of the specimen's initial matrix with a solver of its own.
+double oneFactorizationSeconds(const GlassCeramicSpecimen& g, const std::string& solverName) {
+  const std::unique_ptr<LinearSolver> solver = makeLinearSolver(solverName);
+  const CsrMatrix& A = g.solver().matrix();
+  solver->analyze(A);
+  Stopwatch clock;
+  solver->factorize(A);
+  return clock.seconds();
+}
+
 // The options that define the run: a checkpoint is only continued under the same ones.
 struct RunOptions {
   double hUm, fraction, stepUm;
   std::uint64_t seed;
+  bool reference;
   bool operator==(const RunOptions&) const = default;
 };
 
@@ -49,6 +79,7 @@ struct Progress {
   double seconds = 0;
   LoadStepReport sum;
   LoadStepReport stepSoFar;  // of the load step in progress, up to the checkpoint
+  std::uint64_t history = kFnvOffset;  // hash of the broken-bond counts after every finished load step
 };
 
 void writeCheckpoint(const std::string& path, const Progress& p, const GlassCeramicSpecimen& g) {
@@ -70,7 +101,7 @@ Progress readCheckpoint(const std::string& path, const RunOptions& options, Glas
   ByteReader r(bytes);
   const auto p = r.get<Progress>();
   if (!(p.options == options))
-    throw InvalidInput("checkpoint " + path + " belongs to another run (h, fraction, step or seed differ); "
+    throw InvalidInput("checkpoint " + path + " belongs to another run (h, fraction, step, seed or driver differ); "
                        "remove it to start afresh");
   const auto state = r.getArray<std::uint8_t>();
   r.expectEnd();
@@ -88,20 +119,24 @@ int main(int argc, char** argv) try {
   mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
   double hUm = 8, fraction = 0.2, maxLoadUm = 1.0, stepUm = 0.004, checkpointMinutes = 10;
   std::uint64_t seed = 1;
+  bool reference = false;
   std::string solver = "umfpack", csvPath, pngPath, checkpointPath;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--h-um") hUm = std::stod(value);
-    else if (key == "--fraction") fraction = std::stod(value);
-    else if (key == "--seed") seed = std::stoull(value);
-    else if (key == "--max-load-um") maxLoadUm = std::stod(value);
-    else if (key == "--step-um") stepUm = std::stod(value);
-    else if (key == "--solver") solver = value;
-    else if (key == "--csv") csvPath = value;
-    else if (key == "--png") pngPath = value;
-    else if (key == "--checkpoint") checkpointPath = value;
-    else if (key == "--checkpoint-minutes") checkpointMinutes = std::stod(value);
-    else throw InvalidInput("unknown option " + key);
+  CLI::App app{"glass_ceramic: the glass-ceramic fracture specimen of 000 Sec. 5, with a profile of the driver"};
+  app.add_option("--h-um", hUm, "grid spacing h in um (2 = the paper's full size)")->capture_default_str();
+  app.add_option("--fraction", fraction, "target crystal fraction")->capture_default_str();
+  app.add_option("--seed", seed, "microstructure seed")->capture_default_str();
+  app.add_option("--max-load-um", maxLoadUm, "largest opening U_D in um")->capture_default_str();
+  app.add_option("--step-um", stepUm, "load increment in um")->capture_default_str();
+  app.add_option("--solver", solver, "sparse solver")->capture_default_str()->check(CLI::IsMember(linearSolverNames()));
+  app.add_flag("--reference", reference, "reference driver: refactorize at every change of the matrix, no GMRES");
+  app.add_option("--csv", csvPath, "load-displacement curve and per-step profile (CSV)");
+  app.add_option("--png", pngPath, "final damage picture (PNG)");
+  app.add_option("--checkpoint", checkpointPath, "checkpoint file: saved while running, continued from if present");
+  app.add_option("--checkpoint-minutes", checkpointMinutes, "minutes between checkpoints")->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);  // --help prints and returns 0; an unknown or incomplete option is an error
   }
   GlassCeramicSpec spec;
   spec.grid.nx = static_cast<std::size_t>(std::lround(800.0 / hUm)) + 1;
@@ -109,14 +144,18 @@ int main(int argc, char** argv) try {
   spec.crystalFraction = fraction;
   spec.seed = seed;
   spec.linearSolver = solver;
+  if (reference) spec.reuse = FactorizationReuse::RefactorizeEveryChange;
 
   Stopwatch total;
   GlassCeramicSpecimen g(spec);
   std::printf("# glass-ceramic h = %g um, %zu points, f = %.3f (target %.2f), seed %llu, set-up %.2f s\n", hUm,
               g.solver().discretization().cloud.size(), g.measuredCrystalFraction(), fraction,
               static_cast<unsigned long long>(seed), total.seconds());
+  const double factorizationSeconds = oneFactorizationSeconds(g, solver);
+  std::printf("# driver: %s; one factorization of the initial matrix %.2f s\n",
+              reference ? "reference (refactorize at every change)" : "production", factorizationSeconds);
   Progress run;
-  run.options = {hUm, fraction, stepUm, seed};
+  run.options = {hUm, fraction, stepUm, seed, reference};
   const bool resumed = !checkpointPath.empty() && std::filesystem::exists(checkpointPath);
   if (resumed) {
     run = readCheckpoint(checkpointPath, run.options, g);
@@ -150,6 +189,7 @@ int main(int argc, char** argv) try {
     run.stepSoFar = {};
     sum += r;
     const std::size_t broken = g.solver().brokenByLoading().size();
+    run.history = fnv1a(run.history, broken);
     if (csv)
       csv << U * 1e6 << ',' << g.reactionForce() << ',' << broken << ',' << r.subIterations << ','
           << r.factorizations << ',' << r.krylovIterations << ',' << r.assemblySeconds << ','
@@ -163,6 +203,12 @@ int main(int argc, char** argv) try {
               "assembly %.1f s, bond checks %.1f s\n",
               run.step - 1, sum.subIterations, sum.factorizations, sum.factorizationSeconds, sum.krylovIterations,
               sum.solveSeconds, sum.assemblySeconds, sum.bondCheckSeconds);
+  std::printf("factorization ratio: wall %.1f s / one factorization %.2f s = %.1f\n", elapsed(), factorizationSeconds,
+              elapsed() / factorizationSeconds);
+  std::uint64_t history = run.history;
+  for (std::size_t k : g.solver().brokenByLoading()) history = fnv1a(history, k);
+  std::printf("crack history: %zu broken pairs, hash %016llx\n", g.solver().brokenByLoading().size(),
+              static_cast<unsigned long long>(history));
   const CrackShares L = g.crackShares();
   std::printf("crack reached the right edge: %s\n", g.crackReachedRightEdge() ? "yes" : "no");
   std::printf("crack length: glass %.1f um (%.0f%%), crystal %.1f um (%.0f%%), interface %.1f um (%.0f%%); W = %.1f um\n",

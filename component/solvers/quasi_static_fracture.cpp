@@ -38,12 +38,13 @@ double springStiffness(double mu, double delta) { return kSpringRatio * 24.0 * m
 
 QuasiStaticFracture::QuasiStaticFracture(std::shared_ptr<const LpsDiscretization> disc, FractureMaterial material,
                                          BondState bonds, std::vector<double> unitCollarDisplacement,
-                                         const std::string& solverName)
+                                         const std::string& solverName, FactorizationReuse reuse)
     : disc_(std::move(disc)),
       material_(std::move(material)),
       bonds_(std::move(bonds)),
       unitCollar_(std::move(unitCollarDisplacement)),
-      solver_(makeLinearSolver(solverName)) {
+      solver_(makeLinearSolver(solverName)),
+      reuse_(reuse) {
   const std::size_t n = disc_->cloud.size();
   require(material_.lambda.size() == n && material_.mu.size() == n && material_.fractureEnergy.size() == n,
           "fracture material must have one value per point");
@@ -125,13 +126,14 @@ void QuasiStaticFracture::solveCurrent(LoadStepReport& report) {
         rhs[static_cast<std::size_t>(d.u[p] + a)] +=
             springStiffness(material_.mu[p], c.delta) * u_[2 * p + static_cast<std::size_t>(a)];
 
-  if (hasFactorization_ && !factorizationLive_) rebuildFactorization(report);
+  const bool reuseStale = reuse_ == FactorizationReuse::StaleAsPreconditioner;
+  if (hasFactorization_ && !factorizationLive_ && (matrixFactored_ || reuseStale)) rebuildFactorization(report);
   Stopwatch clock;
   bool solved = false;
   if (matrixFactored_) {
     solver_->solve(rhs, x_);
     solved = true;
-  } else if (hasFactorization_) {
+  } else if (hasFactorization_ && reuseStale) {
     // An older factorization of a nearby matrix (bonds broken since): precondition GMRES with it while
     // that is cheaper than a new factorization. Ski rental: stop iterating once the iterations spent on
     // this factorization would exceed the price of a new one, so at most twice the better choice is paid.

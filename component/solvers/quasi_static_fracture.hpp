@@ -39,12 +39,22 @@ struct LoadStepReport {
   }
 };
 
+// How the solves after a break use the factorization of an older matrix.
+enum class FactorizationReuse {
+  // GMRES preconditioned by the older factorization while that is cheaper than a new one (production).
+  StaleAsPreconditioner,
+  // A new factorization at every change of the matrix and a direct solve, no GMRES: the reference whose
+  // crack history the production driver must repeat exactly (tests/fracture_driver_test.cpp).
+  RefactorizeEveryChange,
+};
+
 class QuasiStaticFracture {
  public:
   // unitCollarDisplacement: (u_x, u_y) of every point for load 1; the collar follows load * it
   // (the problem has no body force).
   QuasiStaticFracture(std::shared_ptr<const LpsDiscretization> disc, FractureMaterial material, BondState bonds,
-                      std::vector<double> unitCollarDisplacement, const std::string& solverName = "umfpack");
+                      std::vector<double> unitCollarDisplacement, const std::string& solverName = "umfpack",
+                      FactorizationReuse reuse = FactorizationReuse::StaleAsPreconditioner);
 
   LoadStepReport advance(double load);
   // Called after every sub-iteration that broke bonds, with the state consistent (saveState() then
@@ -54,6 +64,8 @@ class QuasiStaticFracture {
 
   const LpsDiscretization& discretization() const { return *disc_; }
   const BondState& bonds() const { return bonds_; }
+  // The current system matrix (unknown-unknown block).
+  const CsrMatrix& matrix() const { return system_.A; }
   // (u_x, u_y) of every point (the collar included).
   const std::vector<double>& displacement() const { return u_; }
   double load() const { return load_; }
@@ -80,6 +92,7 @@ class QuasiStaticFracture {
   BondState bonds_;
   std::vector<double> unitCollar_;
   std::unique_ptr<LinearSolver> solver_;
+  FactorizationReuse reuse_;
   LpsSystem system_;
   std::vector<std::uint8_t> stabilized_;  // points held by the springs (they have a broken bond)
   // The matrix the solver factorized (kept alive for it) and the state it belongs to: the bonds intact
