@@ -17,13 +17,6 @@ Rgb blend(const Rgb& a, const Rgb& b, double t) {
   return {mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)};
 }
 
-// Index of the grid field called `name` in layout.fields.
-std::optional<std::size_t> gridField(const ResultLayout& layout, const std::string& name) {
-  for (std::size_t i = 0; i < layout.fields.size(); ++i)
-    if (layout.fields[i].name == name && layout.onGrid(layout.fields[i])) return i;
-  return std::nullopt;
-}
-
 }  // namespace
 
 RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
@@ -47,14 +40,6 @@ RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<dou
     image.pixels[i] = blend(kCrackOnset, kCrackFull, t);
   }
   return image;
-}
-
-std::optional<std::filesystem::path> writeDamagePicture(const std::filesystem::path& file, const ResultLayout& layout,
-                                                        const StepValues& step) {
-  const auto damage = gridField(layout, "damage"), modulus = gridField(layout, "youngsModulus");
-  if (!damage || !modulus) return std::nullopt;
-  writePng(file, damagePicture(layout.ny, layout.nx, step.fields[*damage], step.fields[*modulus]));
-  return file;
 }
 
 }  // namespace peristep::host

@@ -1,12 +1,10 @@
 #pragma once
-// The picture `peristep run` leaves next to its results: the material (two phases told apart by
-// Young's modulus) in blues, and the cracks drawn over it in red to yellow.
-#include <filesystem>
-#include <optional>
+// The colours of a damage picture: the material (two phases told apart by Young's modulus) in blues,
+// and the cracks drawn over it in red to yellow. run_picture draws them with a legend and a colour
+// bar; bench/glass_ceramic writes them as a plain PNG (png_writer).
 #include <vector>
 
 #include "png_writer.hpp"
-#include "result_layout.hpp"
 
 namespace peristep::host {
 
@@ -24,10 +22,5 @@ inline constexpr Rgb kCrackFull{255, 215, 60};    // damage == 1: brighter with 
 // [ny][nx] damage and Young's modulus (empty: the model has none) to one colour per point.
 RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
                        const std::vector<double>& youngsModulus);
-
-// Writes the picture of `step` when the layout records both `damage` and `youngsModulus` on the
-// grid; returns the file written, or nothing when the model lacks either output.
-std::optional<std::filesystem::path> writeDamagePicture(const std::filesystem::path& file, const ResultLayout& layout,
-                                                        const StepValues& step);
 
 }  // namespace peristep::host

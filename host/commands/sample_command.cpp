@@ -8,6 +8,7 @@
 #include "../fmu_loader.hpp"
 #include "../host_errors.hpp"
 #include "../progress.hpp"
+#include "../sample_plot.hpp"
 #include "../sample_results.hpp"
 #include "../sample_study.hpp"
 #include "commands.hpp"
@@ -124,6 +125,7 @@ int sampleCommand(const SampleOptions& options) {
   writeStudyHdf5(out, description, study.layout(), levels);
   writeStudyCsv(csv, study.layout(), levels);
   printLevels(levels, study.layout(), study.hasExactMoments());
+  std::cout << plotSampleStudy(csv, fmu.md.modelName + ": " + options.scene + ", rule " + options.rule) << '\n';
   std::cout << "wrote " << out.string() << " and " << csv.string() << " (samples kept in " << store.directory().string()
             << ")\n";
   return 0;
