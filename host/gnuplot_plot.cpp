@@ -44,6 +44,7 @@ std::string plotConvergence(const std::vector<LevelResult>& rows, const std::fil
          << "set xlabel 'grid spacing h [m]'\n"
          << "plot $levels using 1:2 with linespoints pt 7 title 'errorL2'" << fitLine(rows, false, "h") << "\n"
          << "set xlabel 'wall time per level [s]'\n"
+         << "set key top right\n"  // the error falls with cost: the upper right corner is free
          << "plot $levels using 3:2 with linespoints pt 7 title 'errorL2'" << fitLine(rows, true, "t") << "\n"
          << "unset multiplot\n";
   return runGnuplot(script.str());

@@ -19,6 +19,9 @@ bool inputVaries(const std::vector<StepScalars>& steps) {
   return false;
 }
 
+// "name [unit]", or the name alone where the model declares no unit (dimensionless or not stated).
+std::string axisLabel(const std::string& name, const std::string& unit) { return unit.empty() ? name : name + " [" + unit + "]"; }
+
 std::string exact(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", v);
@@ -82,12 +85,11 @@ std::string plotHistory(const std::filesystem::path& png, const ResultLayout& la
   }
   s << "EOD\n"
     << "set multiplot layout " << (panels.size() + 1) / 2 << ',' << std::min<std::size_t>(panels.size(), 2) << " title " << gnuplotQuoted(title) << " noenhanced\n"
-    << "set xlabel " << gnuplotQuoted(againstInput ? layout.inputName + " [" + (inputUnit.empty() ? "-" : inputUnit) + "]" : "time [s]")
+    << "set xlabel " << gnuplotQuoted(againstInput ? axisLabel(layout.inputName, inputUnit) : "time [s]")
     << " noenhanced\n";
   for (const auto& panel : panels) {
     const std::string& unit = layout.scalars[panel.front()].unit;
-    s << "set ylabel " << gnuplotQuoted(panel.size() == 1 ? layout.scalars[panel.front()].name + " [" + (unit.empty() ? "-" : unit) + "]"
-                                                          : "[" + unit + "]")
+    s << "set ylabel " << gnuplotQuoted(panel.size() == 1 ? axisLabel(layout.scalars[panel.front()].name, unit) : "[" + unit + "]")
       << " noenhanced\nplot ";
     for (std::size_t c = 0; c < panel.size(); ++c)
       s << (c ? ", " : "") << "$steps using 1:" << panel[c] + 2 << " with linespoints pt 7 ps 0.6 title "
