@@ -19,6 +19,12 @@ Rgb blend(const Rgb& a, const Rgb& b, double t) {
 
 }  // namespace
 
+bool hasTwoPhases(const std::vector<double>& youngsModulus) {
+  if (youngsModulus.empty()) return false;
+  const auto [lo, hi] = std::minmax_element(youngsModulus.begin(), youngsModulus.end());
+  return *hi - *lo > 1e-9 * std::max(std::abs(*hi), std::abs(*lo));
+}
+
 RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
                        const std::vector<double>& youngsModulus) {
   const std::size_t n = ny * nx;
@@ -26,13 +32,10 @@ RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<dou
     throw RunError("damage picture: the fields do not have " + std::to_string(ny) + " x " + std::to_string(nx) + " values");
   RgbImage image{ny, nx, std::vector<Rgb>(n, kUniformPhase)};
 
-  if (!youngsModulus.empty()) {
+  if (hasTwoPhases(youngsModulus)) {
     const auto [lo, hi] = std::minmax_element(youngsModulus.begin(), youngsModulus.end());
-    // A single material has no phases to tell apart; rounding in the component must not split it.
-    if (*hi - *lo > 1e-9 * std::max(std::abs(*hi), std::abs(*lo))) {
-      const double mid = 0.5 * (*lo + *hi);
-      for (std::size_t i = 0; i < n; ++i) image.pixels[i] = youngsModulus[i] > mid ? kStiffPhase : kSoftPhase;
-    }
+    const double mid = 0.5 * (*lo + *hi);
+    for (std::size_t i = 0; i < n; ++i) image.pixels[i] = youngsModulus[i] > mid ? kStiffPhase : kSoftPhase;
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (!(damage[i] >= kCrackDamage)) continue;

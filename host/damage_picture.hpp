@@ -19,6 +19,10 @@ inline constexpr Rgb kUniformPhase{60, 110, 190}; // one material (or no modulus
 inline constexpr Rgb kCrackOnset{190, 30, 0};     // damage == kCrackDamage
 inline constexpr Rgb kCrackFull{255, 215, 60};    // damage == 1: brighter with more damage
 
+// True when the moduli hold two materials; a single one has no phases to tell apart, and rounding in
+// the component must not split it.
+bool hasTwoPhases(const std::vector<double>& youngsModulus);
+
 // [ny][nx] damage and Young's modulus (empty: the model has none) to one colour per point.
 RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
                        const std::vector<double>& youngsModulus);

@@ -127,7 +127,7 @@ std::string damageScript(const ResultLayout& layout, const std::vector<double>& 
     const auto named = [&](const char* phase, double e) {
       return (glassCeramic ? std::string(phase) + ", " : std::string()) + "E = " + g4(e / 1e9) + " GPa";
     };
-    if (*hi - *lo > 1e-9 * std::max(std::abs(*hi), std::abs(*lo)))
+    if (hasTwoPhases(*modulus))
       legend = {{kSoftPhase, named("glass", *lo)}, {kStiffPhase, named("crystal", *hi)}};
     else
       legend = {{kUniformPhase, "material, E = " + g4(*lo / 1e9) + " GPa"}};

@@ -2,8 +2,8 @@
 // history of the scalar outputs to CSV, a picture of the last step and a plot of the history (gnuplot).
 #include <cmath>
 #include <iostream>
-#include <variant>
 #include <sstream>
+#include <variant>
 
 #include "../fmu_loader.hpp"
 #include "../gnuplot.hpp"
