@@ -17,14 +17,13 @@ Rgb blend(const Rgb& a, const Rgb& b, double t) {
   return {mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)};
 }
 
-// Index of the grid field called `name` in layout.fields.
-std::optional<std::size_t> gridField(const ResultLayout& layout, const std::string& name) {
-  for (std::size_t i = 0; i < layout.fields.size(); ++i)
-    if (layout.fields[i].name == name && layout.onGrid(layout.fields[i])) return i;
-  return std::nullopt;
-}
-
 }  // namespace
+
+bool hasTwoPhases(const std::vector<double>& youngsModulus) {
+  if (youngsModulus.empty()) return false;
+  const auto [lo, hi] = std::minmax_element(youngsModulus.begin(), youngsModulus.end());
+  return *hi - *lo > 1e-9 * std::max(std::abs(*hi), std::abs(*lo));
+}
 
 RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
                        const std::vector<double>& youngsModulus) {
@@ -33,13 +32,10 @@ RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<dou
     throw RunError("damage picture: the fields do not have " + std::to_string(ny) + " x " + std::to_string(nx) + " values");
   RgbImage image{ny, nx, std::vector<Rgb>(n, kUniformPhase)};
 
-  if (!youngsModulus.empty()) {
+  if (hasTwoPhases(youngsModulus)) {
     const auto [lo, hi] = std::minmax_element(youngsModulus.begin(), youngsModulus.end());
-    // A single material has no phases to tell apart; rounding in the component must not split it.
-    if (*hi - *lo > 1e-9 * std::max(std::abs(*hi), std::abs(*lo))) {
-      const double mid = 0.5 * (*lo + *hi);
-      for (std::size_t i = 0; i < n; ++i) image.pixels[i] = youngsModulus[i] > mid ? kStiffPhase : kSoftPhase;
-    }
+    const double mid = 0.5 * (*lo + *hi);
+    for (std::size_t i = 0; i < n; ++i) image.pixels[i] = youngsModulus[i] > mid ? kStiffPhase : kSoftPhase;
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (!(damage[i] >= kCrackDamage)) continue;
@@ -47,14 +43,6 @@ RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<dou
     image.pixels[i] = blend(kCrackOnset, kCrackFull, t);
   }
   return image;
-}
-
-std::optional<std::filesystem::path> writeDamagePicture(const std::filesystem::path& file, const ResultLayout& layout,
-                                                        const StepValues& step) {
-  const auto damage = gridField(layout, "damage"), modulus = gridField(layout, "youngsModulus");
-  if (!damage || !modulus) return std::nullopt;
-  writePng(file, damagePicture(layout.ny, layout.nx, step.fields[*damage], step.fields[*modulus]));
-  return file;
 }
 
 }  // namespace peristep::host

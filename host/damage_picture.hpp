@@ -1,12 +1,10 @@
 #pragma once
-// The picture `peristep run` leaves next to its results: the material (two phases told apart by
-// Young's modulus) in blues, and the cracks drawn over it in red to yellow.
-#include <filesystem>
-#include <optional>
+// The colours of a damage picture: the material (two phases told apart by Young's modulus) in blues,
+// and the cracks drawn over it in red to yellow. run_picture draws them with a legend and a colour
+// bar; bench/glass_ceramic writes them as a plain PNG (png_writer).
 #include <vector>
 
 #include "png_writer.hpp"
-#include "result_layout.hpp"
 
 namespace peristep::host {
 
@@ -21,13 +19,12 @@ inline constexpr Rgb kUniformPhase{60, 110, 190}; // one material (or no modulus
 inline constexpr Rgb kCrackOnset{190, 30, 0};     // damage == kCrackDamage
 inline constexpr Rgb kCrackFull{255, 215, 60};    // damage == 1: brighter with more damage
 
+// True when the moduli hold two materials; a single one has no phases to tell apart, and rounding in
+// the component must not split it.
+bool hasTwoPhases(const std::vector<double>& youngsModulus);
+
 // [ny][nx] damage and Young's modulus (empty: the model has none) to one colour per point.
 RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
                        const std::vector<double>& youngsModulus);
-
-// Writes the picture of `step` when the layout records both `damage` and `youngsModulus` on the
-// grid; returns the file written, or nothing when the model lacks either output.
-std::optional<std::filesystem::path> writeDamagePicture(const std::filesystem::path& file, const ResultLayout& layout,
-                                                        const StepValues& step);
 
 }  // namespace peristep::host

@@ -1,64 +1,53 @@
 #include "gnuplot_plot.hpp"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <sstream>
+
+#include "gnuplot.hpp"
 
 namespace peristep::host {
 
 namespace {
 
-// gnuplot single-quoted string: a quote is written twice.
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
+// Least squares of log(error) against log(x), x being h or wall time: the plot's dashed line.
+std::string fitLine(std::vector<LevelResult> rows, bool againstTime, const char* symbol) {
+  if (againstTime)
+    for (LevelResult& r : rows) r.h = r.wallSeconds;
+  const PowerFit fit = fitPowerLaw(rows);
+  if (!std::isfinite(fit.order)) return "";
+  char line[160];
+  std::snprintf(line, sizeof line, ", %.17g * x**%.17g with lines dashtype 2 lc rgb 'black' title 'fit: %s^{%.2f}'",
+                fit.constant, fit.order, symbol, fit.order);
+  return line;
 }
 
 }  // namespace
 
-bool gnuplotAvailable() {
-  const char* path = std::getenv("PATH");
-  std::istringstream dirs(path ? path : "");
-  for (std::string dir; std::getline(dirs, dir, ':');)
-    if (!dir.empty() && access((std::filesystem::path(dir) / "gnuplot").c_str(), X_OK) == 0) return true;
-  return false;
-}
-
-std::string plotConvergence(const std::filesystem::path& csv, const std::filesystem::path& png, const PowerFit& fit,
-                            const std::string& title) {
+std::string plotConvergence(const std::vector<LevelResult>& rows, const std::filesystem::path& png, const std::string& title) {
   std::ostringstream script;
-  script << "set terminal pngcairo size 1100,450 font ',10'\n"
-         << "set output " << quoted(png.string()) << "\n"
-         << "set datafile separator ','\n"
+  script << "set terminal pngcairo size " << kConvergencePlotWidth << ',' << kConvergencePlotHeight << " font ',10'\n"
+         << "set output " << gnuplotQuoted(png.string()) << "\n"
          << "set logscale xy\n"
          << "set format xy '%.0e'\n"
          << "set grid\n"
          << "set key bottom right\n"
-         << "set ylabel 'L2 error'\n"
-         << "set multiplot layout 1,2 title " << quoted(title) << " noenhanced\n"
-         << "set xlabel 'grid spacing h'\n";
-  // Columns of the CSV: 4 = h, 6 = error_l2, 8 = wall_s.
-  script << "plot " << quoted(csv.string()) << " skip 1 using 4:6 with linespoints pt 7 title 'errorL2'";
-  if (std::isfinite(fit.order))
-    script << ", " << fit.constant << " * x**" << fit.order << " with lines dashtype 2 title sprintf('fit: h^{%.2f}', "
-           << fit.order << ")";
-  script << "\n"
+         << "set ylabel 'L2 error [m]'\n"
+         << "$levels << EOD\n";
+  for (const LevelResult& r : rows) {
+    char line[96];
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", r.h, r.errorL2, r.wallSeconds);
+    script << line;
+  }
+  script << "EOD\n"
+         << "set multiplot layout 1,2 title " << gnuplotQuoted(title) << " noenhanced\n"
+         << "set xlabel 'grid spacing h [m]'\n"
+         << "plot $levels using 1:2 with linespoints pt 7 title 'errorL2'" << fitLine(rows, false, "h") << "\n"
          << "set xlabel 'wall time per level [s]'\n"
-         << "plot " << quoted(csv.string()) << " skip 1 using 8:6 with linespoints pt 7 title 'errorL2'\n"
+         << "set key top right\n"  // the error falls with cost: the upper right corner is free
+         << "plot $levels using 3:2 with linespoints pt 7 title 'errorL2'" << fitLine(rows, true, "t") << "\n"
          << "unset multiplot\n";
-
-  std::FILE* pipe = popen("gnuplot", "w");
-  if (!pipe) return "cannot start gnuplot";
-  const std::string text = script.str();
-  std::fwrite(text.data(), 1, text.size(), pipe);
-  const int status = pclose(pipe);
-  if (status != 0) return "gnuplot failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
-  return "";
+  return runGnuplot(script.str());
 }
 
 }  // namespace peristep::host

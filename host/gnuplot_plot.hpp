@@ -1,19 +1,17 @@
 #pragma once
-// A PNG of a refinement study drawn by gnuplot (when it is installed): error against grid spacing
-// with the least-squares power law, and error against wall time.
+// The plot of a refinement study (`peristep convergence`), drawn by gnuplot.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "convergence_table.hpp"
 
 namespace peristep::host {
 
-// Looks for an executable `gnuplot` on PATH.
-bool gnuplotAvailable();
-
-// Reads the CSV written by writeConvergenceCsv. Returns gnuplot's complaint, or "" on success:
-// a missing plot is worth a warning, not a failed study.
-std::string plotConvergence(const std::filesystem::path& csv, const std::filesystem::path& png, const PowerFit& fit,
-                            const std::string& title);
+// Error against grid spacing and against wall time per level, log-log, each with its least-squares
+// power law in the legend; kConvergencePlotWidth x kConvergencePlotHeight px. Returns gnuplot's
+// complaint, or "" on success.
+inline constexpr unsigned kConvergencePlotWidth = 1100, kConvergencePlotHeight = 450;
+std::string plotConvergence(const std::vector<LevelResult>& rows, const std::filesystem::path& png, const std::string& title);
 
 }  // namespace peristep::host

@@ -19,6 +19,7 @@ class ResultFiles {
 
   void append(const StepValues& step);
   std::uint64_t steps() const { return writer_->steps(); }
+  const std::vector<StepScalars>& history() const { return writer_->history(); }
 
   // Success: the partial files become <name>.h5 and <name>.xmf.
   void commit();

@@ -1,49 +1,24 @@
-// The damage picture of `peristep run`: the PNG writer and colour map read back with libpng, and the
-// picture a small glass-ceramic run leaves next to its results.
+// Pictures: the damage colours and the plain PNG writer (bench/glass_ceramic) read back with libpng;
+// the annotated picture `peristep run` draws with gnuplot (title, colour bar, axes, legend), for hand-
+// made layouts and for a small glass-ceramic run and the default run.
 #include <catch2/catch.hpp>
 
-#include <png.h>
+#include <cmath>
 
 #include "damage_picture.hpp"
+#include "gnuplot.hpp"
 #include "host_errors.hpp"
 #include "host_test_support.hpp"
+#include "png_test_support.hpp"
 #include "png_writer.hpp"
+#include "run_picture.hpp"
 
 using namespace host_test;
 using namespace peristep::host;
 using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
 
 namespace {
-
-// A PNG decoded to 8-bit RGB, picture row 0 at the top as in the file.
-struct Picture {
-  std::uint32_t width = 0, height = 0;
-  bool colour = false, alpha = false;  // as stored in the file, before conversion to RGB
-  std::vector<std::uint8_t> rgb;
-  Rgb at(std::uint32_t x, std::uint32_t y) const {
-    const std::uint8_t* p = rgb.data() + (static_cast<std::size_t>(y) * width + x) * 3;
-    return {p[0], p[1], p[2]};
-  }
-};
-
-Picture readPng(const fs::path& file) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&image, file.c_str())) throw std::runtime_error(file.string() + ": " + image.message);
-  Picture p;
-  p.width = image.width;
-  p.height = image.height;
-  p.colour = image.format & PNG_FORMAT_FLAG_COLOR;
-  p.alpha = image.format & PNG_FORMAT_FLAG_ALPHA;
-  image.format = PNG_FORMAT_RGB;
-  p.rgb.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, p.rgb.data(), 0, nullptr)) {
-    const std::string message = image.message;
-    png_image_free(&image);
-    throw std::runtime_error(file.string() + ": " + message);
-  }
-  return p;
-}
 
 // The colour at the centre of grid point (row, col)'s block, row 0 being the bottom of the picture.
 Rgb pointColour(const Picture& p, std::uint64_t ny, std::uint64_t row, std::uint64_t col, std::uint64_t k) {
@@ -130,50 +105,155 @@ TEST_CASE("png: an unwritable picture is a RunError", "[host][png]") {
   CHECK_THROWS_AS(writePng(dir / "empty.png", RgbImage{}), RunError);
 }
 
-TEST_CASE("png: the run's picture needs both damage and youngsModulus on the grid", "[host][png]") {
-  TempDir dir;
-  ResultLayout layout;
-  layout.ny = 2;
-  layout.nx = 3;
-  layout.fields = {{"ux", {2, 3}, "m", ""}, {"damage", {2, 3}, "", ""}};
-  StepValues step;
-  step.fields = {std::vector<double>(6, 0.0), std::vector<double>(6, 0.0)};
-  CHECK_FALSE(writeDamagePicture(dir / "a.png", layout, step));
-  CHECK_FALSE(fs::exists(dir / "a.png"));
+namespace {
 
-  layout.fields.push_back({"youngsModulus", {6}, "Pa", ""});  // not on the grid
-  step.fields.push_back(std::vector<double>(6, 80e9));
-  CHECK_FALSE(writeDamagePicture(dir / "b.png", layout, step));
-
-  layout.fields.back().shape = {2, 3};
-  CHECK(writeDamagePicture(dir / "c.png", layout, step) == dir / "c.png");
-  const Picture p = readPng(dir / "c.png");
-  CHECK(p.width == 3 * pictureBlockSize(3));
-  CHECK(p.height == 2 * pictureBlockSize(3));
-  CHECK(p.at(0, 0) == kUniformPhase);
+// A plate of ny x nx points, h = 0.1 mm, left half soft (80 GPa), right half stiff (133 GPa), damage
+// `crack` on the bottom row's left half; ux = 1 um * x / Lx.
+ResultLayout plateLayout(std::uint64_t ny, std::uint64_t nx) {
+  ResultLayout l;
+  l.ny = ny;
+  l.nx = nx;
+  std::vector<double> x, y;
+  for (std::uint64_t j = 0; j < ny; ++j)
+    for (std::uint64_t i = 0; i < nx; ++i) x.push_back(1e-4 * static_cast<double>(i)), y.push_back(1e-4 * static_cast<double>(j));
+  l.constantArrays = {{"x", {ny, nx}, "m", ""}, {"y", {ny, nx}, "m", ""}};
+  l.constantValues = {x, y};
+  l.fields = {{"ux", {ny, nx}, "m", ""}, {"uy", {ny, nx}, "m", ""}, {"damage", {ny, nx}, "", ""},
+              {"youngsModulus", {ny, nx}, "Pa", ""}};
+  l.inputName = "loadDisplacement";
+  l.parameterAttributes = {{"scene", std::string("glassCeramic")}};
+  return l;
 }
 
-TEST_CASE("peristep run: a glass-ceramic run leaves a damage picture next to its results", "[host][png][run]") {
+StepValues plateStep(const ResultLayout& l, double crack) {
+  StepValues s;
+  s.time = 1;
+  s.input = 5e-8;
+  s.fields.assign(4, std::vector<double>(l.ny * l.nx, 0.0));
+  for (std::uint64_t j = 0; j < l.ny; ++j)
+    for (std::uint64_t i = 0; i < l.nx; ++i) {
+      const std::size_t k = j * l.nx + i;
+      s.fields[0][k] = 1e-6 * static_cast<double>(i) / static_cast<double>(l.nx);
+      s.fields[2][k] = j == 0 && i < l.nx / 2 ? crack : 0.0;
+      s.fields[3][k] = i < l.nx / 2 ? 80e9 : 133e9;
+    }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("picture: the size follows the domain's aspect ratio within bounds", "[host][png]") {
+  ResultLayout l;
+  l.ny = l.nx = 33;
+  CHECK(runPictureSize(l).width == 1000);
+  CHECK(runPictureSize(l).height == 890);
+  l.ny = 14, l.nx = 26;
+  CHECK(runPictureSize(l).height == 567);
+  l.ny = 1, l.nx = 1000;
+  CHECK(runPictureSize(l).height == 400);
+  l.ny = 1000, l.nx = 10;
+  CHECK(runPictureSize(l).height == 1300);
+}
+
+TEST_CASE("picture: phases with a legend, cracks on a colour bar, title and axes", "[host][png]") {
+  REQUIRE(gnuplotAvailable());
+  TempDir dir;
+  const ResultLayout layout = plateLayout(10, 20);
+  const StepValues step = plateStep(layout, 1.0);
+  CHECK(writeRunPicture(dir / "plate.png", layout, step, {"plate", 3, 7, "m"}) == "");
+  const Picture p = readPng(dir / "plate.png");
+  CHECK(p.width == runPictureSize(layout).width);
+  CHECK(p.height == runPictureSize(layout).height);
+  // Both phases and the fully broken points in their colours: large areas of each.
+  CHECK(countColour(p, kSoftPhase) > 20000);
+  CHECK(countColour(p, kStiffPhase) > 20000);
+  // Title above the plot, legend below it, colour bar (red to yellow) at the right.
+  CHECK(countInk(p, 0, 0, p.width, 40) > 100);
+  CHECK(countInk(p, 0, p.height - 25, p.width, p.height) > 100);
+  CHECK(countColoured(p, p.width - 120, 0, p.width, p.height) > 2000);
+
+  // Damage below the crack threshold is drawn as material, still with its colour bar.
+  CHECK(writeRunPicture(dir / "intact.png", layout, plateStep(layout, 0.2), {"plate", 1, 1, "m"}) == "");
+  const Picture intact = readPng(dir / "intact.png");
+  // The fully broken points: a large area of the crack colour (which the legend and colour bar also show).
+  CHECK(countColour(p, kCrackFull) > countColour(intact, kCrackFull) + 1000);
+  CHECK(countColoured(intact, intact.width - 120, 0, intact.width, intact.height) > 2000);
+}
+
+TEST_CASE("picture: without damage, the displacement magnitude on the deformed grid", "[host][png]") {
+  REQUIRE(gnuplotAvailable());
+  TempDir dir;
+  ResultLayout layout = plateLayout(12, 12);
+  const StepValues step = plateStep(layout, 0.0);
+  CHECK(writeRunPicture(dir / "u.png", layout, step, {"smooth", 4, 4, ""}) == "");
+  const Picture p = readPng(dir / "u.png");
+  CHECK(p.width == 1000);
+  CHECK(p.height == 890);
+  CHECK(countColour(p, kSoftPhase) == 0);  // no material map
+  // The viridis ends: |u| = 0 at the left edge, the largest at the right.
+  const auto near = [&](Rgb c) {
+    std::size_t n = 0;
+    for (std::uint32_t y = 0; y < p.height; ++y)
+      for (std::uint32_t x = 0; x < p.width; ++x) {
+        const Rgb q = p.at(x, y);
+        n += std::abs(q.r - c.r) + std::abs(q.g - c.g) + std::abs(q.b - c.b) < 30;
+      }
+    return n;
+  };
+  CHECK(near({0x44, 0x01, 0x54}) > 5000);
+  CHECK(near({0xfd, 0xe7, 0x25}) > 5000);
+
+  layout.constantArrays.clear();
+  layout.constantValues.clear();
+  CHECK(writeRunPicture(dir / "none.png", layout, step, {"smooth", 1, 1, ""}) == "no point coordinates x, y on the grid");
+  CHECK_FALSE(fs::exists(dir / "none.png"));
+}
+
+TEST_CASE("peristep run: a glass-ceramic run leaves a picture, its history and the plot of it", "[host][png][run]") {
+  REQUIRE(gnuplotAvailable());
   TempDir dir;
   const ProcessResult r =
       runProcess({PERISTEP_HOST_BINARY, "run", PERISTEP_HOST_TEST_DATA "/glass_ceramic_small.toml", "--out", "small.h5"},
                  dir.path());
   INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
   REQUIRE(r.exitCode == 0);
-  CHECK_THAT(r.out, Contains("wrote small.h5 (3 steps, 14 x 26 points), small.xmf and small.png"));
-  REQUIRE(fs::exists(dir / "small.png"));
+  CHECK_THAT(r.out,
+             Contains("wrote small.h5 (3 steps, 14 x 26 points), small.xmf, small.csv, small.png and small_history.png"));
 
   const Picture p = readPng(dir / "small.png");
-  CHECK(p.width == 26 * 31);
-  CHECK(p.height == 14 * 31);
+  CHECK(p.width == 1000);
+  CHECK(p.height == 567);
   CHECK(p.colour);
-  // The plate has both phases.
-  bool glass = false, crystal = false;
-  for (std::uint32_t y = 0; y < p.height; ++y)
-    for (std::uint32_t x = 0; x < p.width; ++x) glass |= p.at(x, y) == kSoftPhase, crystal |= p.at(x, y) == kStiffPhase;
-  CHECK(glass);
-  CHECK(crystal);
-  // The 100 um pre-crack enters from the left edge at mid-height: its faces are drawn as crack.
-  const Rgb precrack = p.at(p.width / 100, p.height / 2);
-  CHECK(precrack.r > precrack.b);
+  CHECK(countColour(p, kSoftPhase) > 10000);   // glass
+  CHECK(countColour(p, kStiffPhase) > 2000);   // crystal
+  // The 100 um pre-crack enters from the left edge at mid-height: drawn in the crack colours.
+  std::size_t crack = 0;
+  for (std::uint32_t y = p.height / 3; y < 2 * p.height / 3; ++y)
+    for (std::uint32_t x = 0; x < p.width / 4; ++x) {
+      const Rgb c = p.at(x, y);
+      crack += c.r > 150 && c.b < 80;
+    }
+  CHECK(crack > 500);
+
+  // The history: one row per step, the load-displacement curve drawn.
+  const std::string csv = readText(dir / "small.csv");
+  CHECK(lineCount(csv) == 4);
+  CHECK_THAT(csv, StartsWith("step,time,loadDisplacement,"));
+  const Picture history = readPng(dir / "small_history.png");
+  CHECK(history.width == 1100);
+  CHECK(history.height == 380);
+}
+
+TEST_CASE("peristep run: the default run draws the displacement, not a material map", "[host][png][run]") {
+  REQUIRE(gnuplotAvailable());
+  TempDir dir;
+  const ProcessResult r = runProcess({PERISTEP_HOST_BINARY, "run", "--out", "d.h5"}, dir.path());
+  INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
+  REQUIRE(r.exitCode == 0);
+  const Picture p = readPng(dir / "d.png");
+  CHECK(p.width == 1000);
+  CHECK(p.height == 890);
+  CHECK(countColour(p, kUniformPhase) == 0);
+  CHECK(countColour(p, kSoftPhase) == 0);
+  CHECK(countColoured(p, 100, 70, 830, 800) > 400000);  // the plot area is a colour map
 }

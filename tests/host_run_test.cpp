@@ -93,7 +93,7 @@ TEST_CASE("peristep run: the default scene through the default FMU", "[host][run
   CHECK(std::string(reinterpret_cast<const char*>(xmlDocGetRootElement(xmf)->name)) == "Xdmf");
   xmlFreeDoc(xmf);
   const std::string xmfText = readText(dir / "peristep_default.xmf");
-  CHECK_THAT(xmfText, Contains("peristep_default.h5:/fields/damage"));
+  CHECK_THAT(xmfText, Contains("peristep_default.h5:/xdmf/step_4/damage"));
   CHECK_THAT(xmfText, Contains("<Time Value=\"1\"/>"));
   CHECK_FALSE(fs::exists(dir / "peristep_default.partial.h5"));
 }

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "../gnuplot.hpp"
 #include "../gnuplot_plot.hpp"
 #include "../host_errors.hpp"
 #include "../level_runner.hpp"
@@ -54,7 +55,7 @@ int convergenceCommand(const ConvergenceOptions& options) {
     std::cout << "wrote " << csv.string();
     if (!gnuplotAvailable()) {
       std::cout << " (gnuplot not on PATH: no plot)\n";
-    } else if (const std::string problem = plotConvergence(csv, png, fit, fmu.md.modelName + ": " + options.scene);
+    } else if (const std::string problem = plotConvergence(rows, png, fmu.md.modelName + ": " + options.scene);
                !problem.empty()) {
       std::cout << '\n';
       std::cerr << "peristep: no plot: " << problem << '\n';

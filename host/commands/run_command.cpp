@@ -1,14 +1,17 @@
-// `peristep run [SCENE] [--fmu PATH] [--out FILE]`: one loading scenario, results to HDF5 + XDMF.
+// `peristep run [SCENE] [--fmu PATH] [--out FILE]`: one loading scenario, results to HDF5 + XDMF, the
+// history of the scalar outputs to CSV, a picture of the last step and a plot of the history (gnuplot).
 #include <cmath>
 #include <iostream>
-#include <optional>
 #include <sstream>
+#include <variant>
 
-#include "../damage_picture.hpp"
 #include "../fmu_loader.hpp"
+#include "../gnuplot.hpp"
 #include "../host_errors.hpp"
 #include "../progress.hpp"
 #include "../result_files.hpp"
+#include "../run_history.hpp"
+#include "../run_picture.hpp"
 #include "../simulation.hpp"
 #include "commands.hpp"
 #include "opened_fmu.hpp"
@@ -63,12 +66,41 @@ void checkFinite(const StepValues& step, const ResultLayout& layout, std::uint64
       if (!std::isfinite(v)) complain(layout.fields[i].name);
 }
 
-// The damage picture of the last finished step, next to the HDF5 file `h5`; nothing when no step
-// finished or the model lacks the fields it is drawn from.
-std::optional<std::filesystem::path> writePicture(const std::filesystem::path& h5, const ResultLayout& layout,
-                                                  const std::vector<StepValues>& recorded) {
-  if (recorded.empty()) return std::nullopt;
-  return writeDamagePicture(std::filesystem::path(h5).replace_extension(".png"), layout, recorded.back());
+// The picture of the last finished step, the history CSV and its plot, beside the HDF5 file `h5`.
+// Returns the files written, joined for the closing message, and says on stderr what was not drawn.
+std::vector<std::string> writeExtras(const std::filesystem::path& h5, const ResultLayout& layout,
+                                     const std::vector<StepValues>& recorded, const std::vector<StepScalars>& history,
+                                     const ModelDescription& md, const std::string& sceneName) {
+  std::vector<std::string> written;
+  if (recorded.empty()) return written;
+  const std::filesystem::path csv = std::filesystem::path(h5).replace_extension(".csv");
+  writeHistoryCsv(csv, layout, history);
+  written.push_back(csv.string());
+  if (!gnuplotAvailable()) {
+    std::cerr << "peristep: gnuplot not on PATH: no pictures\n";
+    return written;
+  }
+  const Variable* input = layout.inputName.empty() ? nullptr : md.find(layout.inputName);
+  const std::string inputUnit = input ? input->unit : "";
+  std::string scene = sceneName.empty() ? "built-in default scene" : std::filesystem::path(sceneName).filename().string();
+  for (const Attribute& a : layout.parameterAttributes)
+    if (const auto* name = std::get_if<std::string>(&a.value); name && a.name == "scene") scene += " (" + *name + ")";
+  const auto draw = [&](const std::filesystem::path& png, const std::string& problem) {
+    if (problem.empty()) written.push_back(png.string());
+    else std::cerr << "peristep: no " << png.string() << ": " << problem << '\n';
+  };
+  const std::filesystem::path picture = std::filesystem::path(h5).replace_extension(".png");
+  draw(picture, writeRunPicture(picture, layout, recorded.back(), {scene, recorded.size(), recorded.size(), inputUnit}));
+  std::filesystem::path plot = h5;
+  plot.replace_filename(h5.stem().string() + "_history.png");
+  draw(plot, plotHistory(plot, layout, history, md.modelName + ": " + scene, inputUnit));
+  return written;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return out;
 }
 
 }  // namespace
@@ -112,22 +144,22 @@ int runCommand(const RunOptions& options) {
       message += "; no results written, " + out.string() + " left as it was";
     } else {
       message += "; the " + std::to_string(recorded.size()) + " finished step(s) are in " + kept.string();
-      try {  // the picture is a courtesy here: failing to draw it must not hide the run's own error
-        if (const auto png = writePicture(kept, layout, recorded)) message += " (picture " + png->string() + ")";
+      try {  // the pictures are a courtesy here: failing to draw them must not hide the run's own error
+        const auto extras = writeExtras(kept, layout, recorded, files.history(), fmu.md, options.scene);
+        if (!extras.empty()) message += " (also " + joined(extras) + ")";
       } catch (const RunError& pictureError) {
-        message += std::string(" (no picture: ") + pictureError.what() + ")";
+        message += std::string(" (no pictures: ") + pictureError.what() + ")";
       }
       message += ", " + out.string() + " left as it was";
     }
     throw RunError(message);
   }
-  const auto png = writePicture(files.hdf5File(), layout, recorded);
+  std::vector<std::string> extras = writeExtras(files.hdf5File(), layout, recorded, files.history(), fmu.md, options.scene);
+  extras.insert(extras.begin(), files.xdmfFile().string());
 
   printSummary(layout, recorded);
   std::cout << "wrote " << files.hdf5File().string() << " (" << recorded.size() << " steps, " << layout.ny << " x "
-            << layout.nx << " points)" << (png ? ", " : " and ") << files.xdmfFile().string();
-  if (png) std::cout << " and " << png->string();
-  std::cout << '\n';
+            << layout.nx << " points), " << joined(extras) << '\n';
   return 0;
 }
 

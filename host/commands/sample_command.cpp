@@ -14,6 +14,7 @@
 #include "../mpi_session.hpp"
 #include "../mpi_work_queue.hpp"
 #include "../progress.hpp"
+#include "../sample_plot.hpp"
 #include "../sample_results.hpp"
 #include "../sample_study.hpp"
 #include "commands.hpp"
@@ -226,6 +227,7 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   writeStudyCsv(csv, study.layout(), levels);
   printLevels(levels, study.layout(), study.hasExactMoments(), rule.rule);
   const std::size_t failed = printFailures(levels, rule.rule);
+  std::cout << plotSampleStudy(csv, fmu.md.modelName + ": " + options.scene + ", rule " + options.rule) << '\n';
   std::cout << "wrote " << out.string() << " and " << csv.string() << " (samples kept in " << store.directory().string()
             << ")\n";
   return failed > 0 ? kExitRunError : 0;

@@ -1,0 +1,103 @@
+#include "run_history.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "gnuplot.hpp"
+#include "host_errors.hpp"
+
+namespace peristep::host {
+
+namespace {
+
+bool inputVaries(const std::vector<StepScalars>& steps) {
+  for (const StepScalars& s : steps)
+    if (s.input != steps.front().input) return true;
+  return false;
+}
+
+// "name [unit]", or the name alone where the model declares no unit (dimensionless or not stated).
+std::string axisLabel(const std::string& name, const std::string& unit) { return unit.empty() ? name : name + " [" + unit + "]"; }
+
+std::string exact(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
+}  // namespace
+
+void writeHistoryCsv(const std::filesystem::path& file, const ResultLayout& layout, const std::vector<StepScalars>& steps) {
+  std::ofstream out(file, std::ios::trunc);
+  out << "step,time" << (layout.inputName.empty() ? "" : "," + layout.inputName);
+  for (const ArrayInfo& s : layout.scalars) out << ',' << s.name;
+  out << '\n';
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    out << k + 1 << ',' << exact(steps[k].time);
+    if (!layout.inputName.empty()) out << ',' << exact(steps[k].input);
+    for (double v : steps[k].scalars) out << ',' << exact(v);
+    out << '\n';
+  }
+  if (!out) throw RunError(file.string() + ": cannot write the history of the run");
+}
+
+std::vector<std::vector<std::size_t>> historyPanels(const ResultLayout& layout, const std::vector<StepScalars>& steps) {
+  std::vector<std::vector<std::size_t>> panels;
+  std::map<std::string, std::size_t> panelOfUnit;
+  for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
+    bool changes = false;
+    for (const StepScalars& s : steps) changes |= s.scalars[i] != steps.front().scalars[i];
+    if (!changes) continue;
+    const std::string& unit = layout.scalars[i].unit;
+    if (!unit.empty()) {
+      if (const auto it = panelOfUnit.find(unit); it != panelOfUnit.end()) {
+        panels[it->second].push_back(i);
+        continue;
+      }
+      panelOfUnit[unit] = panels.size();
+    }
+    panels.push_back({i});
+  }
+  return panels;
+}
+
+unsigned historyPlotHeight(std::size_t panels) {
+  return kHistoryPanelHeight * static_cast<unsigned>((panels + 1) / 2) + 40;  // + the overall title
+}
+
+std::string plotHistory(const std::filesystem::path& png, const ResultLayout& layout, const std::vector<StepScalars>& steps,
+                        const std::string& title, const std::string& inputUnit) {
+  const auto panels = historyPanels(layout, steps);
+  if (panels.empty()) return "no output changes during the run";
+  const bool againstInput = !layout.inputName.empty() && inputVaries(steps);
+  std::ostringstream s;
+  s << "set terminal pngcairo size " << kHistoryPlotWidth << ',' << historyPlotHeight(panels.size()) << " font ',10'\n"
+    << "set output " << gnuplotQuoted(png.string()) << "\n"
+    << "set grid\nset key top left noenhanced\nset format y '%.3g'\nset format x '%.3g'\n"
+    << "$steps << EOD\n";
+  for (const StepScalars& step : steps) {
+    s << exact(againstInput ? step.input : step.time);
+    for (double v : step.scalars) s << ' ' << exact(v);
+    s << '\n';
+  }
+  s << "EOD\n"
+    << "set multiplot layout " << (panels.size() + 1) / 2 << ',' << std::min<std::size_t>(panels.size(), 2) << " title " << gnuplotQuoted(title) << " noenhanced\n"
+    << "set xlabel " << gnuplotQuoted(againstInput ? axisLabel(layout.inputName, inputUnit) : "time [s]")
+    << " noenhanced\n";
+  for (const auto& panel : panels) {
+    const std::string& unit = layout.scalars[panel.front()].unit;
+    s << "set ylabel " << gnuplotQuoted(panel.size() == 1 ? axisLabel(layout.scalars[panel.front()].name, unit) : "[" + unit + "]")
+      << " noenhanced\nplot ";
+    for (std::size_t c = 0; c < panel.size(); ++c)
+      s << (c ? ", " : "") << "$steps using 1:" << panel[c] + 2 << " with linespoints pt 7 ps 0.6 title "
+        << gnuplotQuoted(layout.scalars[panel[c]].name);
+    s << '\n';
+  }
+  s << "unset multiplot\n";
+  return runGnuplot(s.str());
+}
+
+}  // namespace peristep::host

@@ -1,0 +1,34 @@
+#pragma once
+// The picture `peristep run` leaves next to its results (<name>.png), drawn by gnuplot from the last
+// finished step: a title (scene; step, time and load), axes in mm (or m, um) as the length scale, and a
+// colour bar with the field's name and unit.
+//  - Damage somewhere (cracks, pre-cracks): the material phases in damage_picture's colours with a
+//    legend (glass and crystal for the glass-ceramic, otherwise their moduli) and the cracks
+//    (damage >= kCrackDamage) over them, coloured by damage on the colour bar.
+//  - No damage (the smooth scenes): the displacement magnitude |u| with the grid deformed by u,
+//    magnified by the factor given in the legend.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "result_layout.hpp"
+
+namespace peristep::host {
+
+struct PictureCaption {
+  std::string scene;            // first title line
+  std::uint64_t step = 0, steps = 0;  // step is 1-based
+  std::string inputUnit;        // unit of layout.inputName
+};
+
+struct PictureSize {
+  unsigned width = 0, height = 0;
+};
+// 1000 px wide, as tall as the domain's aspect ratio needs (between 400 and 1300 px).
+PictureSize runPictureSize(const ResultLayout& layout);
+
+// Returns "" or why nothing was drawn (no coordinates or displacement on the grid, gnuplot failed).
+std::string writeRunPicture(const std::filesystem::path& png, const ResultLayout& layout, const StepValues& step,
+                            const PictureCaption& caption);
+
+}  // namespace peristep::host
