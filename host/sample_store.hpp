@@ -35,7 +35,7 @@ class SampleStore {
   // The record, or nothing when it is missing or does not match the expected shape (then recomputed).
   std::optional<SampleRecord> load(std::uint64_t key, std::size_t scalars, const std::vector<std::uint64_t>& fieldSizes) const;
   void save(std::uint64_t key, const SampleRecord& record) const;
-  // The message of a failed sample, or nothing.
+  // The component's message for a failed sample, or nothing.
   std::optional<std::string> failure(std::uint64_t key) const;
   void saveFailure(std::uint64_t key, const std::string& message) const;
   // The file that holds (or will hold) a failed sample's message.

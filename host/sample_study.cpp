@@ -114,7 +114,7 @@ LevelWork SampleStudy::runJobs(const LevelPlan& plan, const NextJob& next,
         store_.save(key, runSample(scene));
       } catch (const RunError& e) {  // the component refused this sample: recorded, the study goes on
         pending_.reset();
-        store_.saveFailure(key, describeJob(plan, *index) + ": " + e.what());
+        store_.saveFailure(key, e.what());
         ++work.failed;
       }
       ++work.computed;
@@ -143,7 +143,7 @@ LevelResult SampleStudy::collect(LevelPlan plan, SampleRule rule, std::uint64_t 
       continue;
     }
     if (std::optional<std::string> message = store_.failure(key)) {
-      r.failures.push_back({k, *message});
+      r.failures.push_back({k, describeJob(r.plan, k) + ": " + *message});
     } else {
       missing.push_back(k);
     }

@@ -6,6 +6,7 @@
 // Under mpirun the ranks share each level's samples (dynamic scheduling, mpi_work_queue.hpp) and rank 0
 // writes the results; --shard K/N runs a fixed part for batch arrays, --merge the statistics afterwards.
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <utility>
 
@@ -69,8 +70,10 @@ void printLevels(const std::vector<LevelResult>& levels, const ResultLayout& lay
   // pseudo-spectral surrogate, "+-se" the Monte Carlo standard errors.
   std::vector<std::size_t> shown;
   for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
-    bool varies = false;
-    for (const SampleRecord& s : levels.back().records) varies |= s.scalars[i] != levels.back().records[0].scalars[i];
+    bool varies = false;  // among the successful samples (a failed one holds NaN)
+    std::optional<double> first;
+    for (const SampleRecord& s : levels.back().records)
+      if (!std::isnan(s.scalars[i])) varies |= first.value_or(s.scalars[i]) != s.scalars[i], first = s.scalars[i];
     if (!varies) continue;
     shown.push_back(i);
     header.push_back("mean " + layout.scalars[i].name);
@@ -124,7 +127,8 @@ std::size_t printFailures(const std::vector<LevelResult>& levels, SampleRule rul
               << " samples failed; "
               << (rule == SampleRule::MonteCarlo
                       ? "the moments are over the " + std::to_string(r.records.size() - r.failures.size()) +
-                            " successful samples (equal weights)"
+                            " successful samples (equal weights: the law given success, biased if failing "
+                            "depends on the output)"
                       : std::string("no moments: the rule's weights do not allow dropping a node (NaN in the files)"))
               << '\n';
     for (const SampleFailure& f : r.failures) std::cout << "  " << f.message << '\n';
