@@ -110,13 +110,15 @@ LevelWork SampleStudy::runJobs(const LevelPlan& plan, const NextJob& next,
       ++work.reused;
     } else {
       if (pending_ && pendingDefinition_ != definition) pending_.reset();
+      std::optional<SampleRecord> record;
       try {
-        store_.save(key, runSample(scene));
+        record = runSample(scene);
       } catch (const RunError& e) {  // the component refused this sample: recorded, the study goes on
         pending_.reset();
         store_.saveFailure(key, e.what());
         ++work.failed;
       }
+      if (record) store_.save(key, *record);  // outside the try: a store that cannot write ends the study
       ++work.computed;
       exitIfAsked(++computedInProcess_);
     }
