@@ -69,8 +69,8 @@ void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const
       writeDataset(g, layout.fields[f].name, layout.fields[f].shape, (r.fieldMoments[f].*member).data());
   };
   statistic("mean", "sum_k w_k q_k, 000:(3.10)", &Moments::mean);
-  statistic("std", "direct quadrature: sqrt(sum_k w_k (q_k - mean)^2), 000:(3.11), 0 where negative",
-            &Moments::std);
+  statistic("std", "direct estimate with the rule's weights (Monte Carlo: 1/Q): sqrt(sum_k w_k (q_k - mean)^2), "
+            "000:(3.11), 0 where the sum is negative", &Moments::std);
   statistic("pce_std", "sparse pseudo-spectral surrogate (Constantine-Eldred-Phipps 2012): sqrt of the sum of the "
             "squared non-constant coefficients", &Moments::pceStd);
   statistic("se_mean", "Monte Carlo standard error of the mean: s/sqrt(Q), s^2 = sum (q_k - mean)^2/(Q-1); 95% "

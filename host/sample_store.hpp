@@ -35,15 +35,14 @@ class SampleStore {
   // The record, or nothing when it is missing or does not match the expected shape (then recomputed).
   std::optional<SampleRecord> load(std::uint64_t key, std::size_t scalars, const std::vector<std::uint64_t>& fieldSizes) const;
   void save(std::uint64_t key, const SampleRecord& record) const;
-  // The message of a failed sample, or nothing.
+  // The component's message for a failed sample, or nothing.
   std::optional<std::string> failure(std::uint64_t key) const;
   void saveFailure(std::uint64_t key, const std::string& message) const;
-  // The file that holds (or will hold) a failed sample's message.
-  std::filesystem::path failureFile(std::uint64_t key) const;
   const std::filesystem::path& directory() const { return dir_; }
 
  private:
   std::filesystem::path file(std::uint64_t key) const;
+  std::filesystem::path failureFile(std::uint64_t key) const;  // sample-<key>.failed
   std::filesystem::path dir_;
 };
 

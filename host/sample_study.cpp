@@ -110,13 +110,15 @@ LevelWork SampleStudy::runJobs(const LevelPlan& plan, const NextJob& next,
       ++work.reused;
     } else {
       if (pending_ && pendingDefinition_ != definition) pending_.reset();
+      std::optional<SampleRecord> record;
       try {
-        store_.save(key, runSample(scene));
+        record = runSample(scene);
       } catch (const RunError& e) {  // the component refused this sample: recorded, the study goes on
         pending_.reset();
-        store_.saveFailure(key, describeJob(plan, *index) + ": " + e.what());
+        store_.saveFailure(key, e.what());
         ++work.failed;
       }
+      if (record) store_.save(key, *record);  // outside the try: a store that cannot write ends the study
       ++work.computed;
       exitIfAsked(++computedInProcess_);
     }
@@ -143,7 +145,7 @@ LevelResult SampleStudy::collect(LevelPlan plan, SampleRule rule, std::uint64_t 
       continue;
     }
     if (std::optional<std::string> message = store_.failure(key)) {
-      r.failures.push_back({k, *message});
+      r.failures.push_back({k, describeJob(r.plan, k) + ": " + *message});
     } else {
       missing.push_back(k);
     }

@@ -25,7 +25,7 @@ namespace peristep::host {
 
 struct SampleFailure {
   std::size_t index = 0;  // job index in the plan
-  std::string message;
+  std::string message;    // "sample k of Q (xi = [...]): " and the component's message
 };
 
 struct LevelResult {

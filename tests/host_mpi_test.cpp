@@ -146,7 +146,7 @@ TEST_CASE("mpi: a study killed part-way under mpirun and restarted recomputes no
   CHECK(row.rfind("12,12," + std::to_string(12 - before.size()) + ",", 0) == 0);  // level, samples, computed
 }
 
-TEST_CASE("mpi-free shards: --shard 1/2 and 2/2 then --merge give the serial statistics; --merge names what is missing",
+TEST_CASE("mpi-free shards: --shard 1/2 and 2/2 then --merge give the serial statistics and --merge names what is missing",
           "[host][sample][mpi][shard]") {
   TempDir serial, shards;
   for (const TempDir* d : {&serial, &shards}) writeText(*d / "t2.toml", smallScene("composite_sampling.toml", 9));

@@ -31,7 +31,7 @@ double spread(const std::vector<double>& v) {
 
 }  // namespace
 
-TEST_CASE("sampling statistics: Monte Carlo standard errors by hand on {1, 2, 3, 4}", "[host][sample][statistics]") {
+TEST_CASE("sampling statistics: Monte Carlo standard errors by hand on the samples 1 2 3 4", "[host][sample][statistics]") {
   const Moments m = monteCarloMoments({{1}, {2}, {3}, {4}});
   CHECK(m.mean[0] == 2.5);
   CHECK(m.std[0] == Approx(std::sqrt(1.25)).epsilon(1e-15));               // m2 = 5/4

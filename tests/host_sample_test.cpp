@@ -10,6 +10,7 @@
 #include <sstream>
 #include <thread>
 
+#include "fmu_archive.hpp"
 #include "host_test_support.hpp"
 
 using namespace host_test;
@@ -195,4 +196,62 @@ TEST_CASE("peristep sample: rules that do not fit the scene or the command line 
   const ProcessResult none = sample(dir.path(), {"gc.toml", "--rule", "tensor", "--level", "2"});
   CHECK(none.exitCode == 2);
   CHECK_THAT(none.err, Contains("no random coordinates"));
+}
+
+TEST_CASE("peristep sample: a sample the component refuses is recorded and the study goes on", "[host][sample]") {
+  // An unpacked PeriStep FMU whose binary refuses fmi3DoStep when xi[0] > 0.5 (host_failing_component.cpp).
+  TempDir dir;
+  {
+    const peristep::host::FmuArchive archive(PERISTEP_FMU);
+    fs::copy(archive.root(), dir / "fmu", fs::copy_options::recursive);
+  }
+  fs::copy_file(PERISTEP_FAILING_COMPONENT, dir / "fmu" / "binaries" / "x86_64-linux" / "PeriStep.so",
+                fs::copy_options::overwrite_existing);
+  writeText(dir / "t1.toml", sceneText("smooth_sampling.toml", {{"nx", "9"}, {"ny", "9"}}));
+  const auto run = [&](const std::vector<std::string>& args) {
+    std::vector<std::string> all{PERISTEP_HOST_BINARY, "sample", "t1.toml", "--fmu", (dir / "fmu").string()};
+    all.insert(all.end(), args.begin(), args.end());
+    return runProcess(all, dir.path());
+  };
+
+  SECTION("a quadrature rule: no moments (its weights do not allow dropping a node)") {
+    const ProcessResult r = run({"--rule", "tensor", "--level", "3", "--out", "q.h5"});  // nodes -1.73, 0, 1.73
+    INFO(r.out << r.err);
+    CHECK(r.exitCode == 1);  // the files are written, the exit code says a sample failed
+    CHECK_THAT(r.out, Contains("level 3: 1 of 3 samples failed; no moments") &&
+                          Contains("sample 3 of 3 (xi = [1.73205]): fmi3DoStep returned fmi3Error"));
+    const std::string csv = readText(dir / "q.csv");
+    INFO(csv);
+    CHECK(csv.find("\n3,3,3,,,,,") != std::string::npos);  // level 3, 3 samples, 3 computed, no errors
+    const hid_t f = openHdf5(dir / "q.h5");
+    REQUIRE(f >= 0);
+    const Dataset mean = readDataset(f, "/level_3/mean/ux");
+    H5Fclose(f);
+    CHECK(std::isnan(mean.values.at(0)));
+    // Restarted: the failed sample is finished too (its message is stored), nothing is recomputed.
+    const ProcessResult again = run({"--rule", "tensor", "--level", "3", "--out", "q.h5"});
+    CHECK(again.exitCode == 1);
+    CHECK(readText(dir / "q.csv").find("\n3,3,0,") != std::string::npos);
+  }
+  SECTION("Monte Carlo: the moments of the successful samples, with their count") {
+    const ProcessResult r = run({"--rule", "mc", "--samples", "12", "--out", "mc.h5"});
+    INFO(r.out << r.err);
+    CHECK(r.exitCode == 1);
+    const hid_t f = openHdf5(dir / "mc.h5");
+    REQUIRE(f >= 0);
+    const Dataset nodes = readDataset(f, "/level_12/nodes"), samples = readDataset(f, "/level_12/samples/errorL2");
+    const Dataset mean = readDataset(f, "/level_12/mean/errorL2");
+    H5Fclose(f);
+    double sum = 0;
+    std::size_t ok = 0;
+    for (std::size_t k = 0; k < 12; ++k) {
+      CHECK(std::isnan(samples.values[k]) == (nodes.values[k] > 0.5));
+      if (nodes.values[k] <= 0.5) sum += samples.values[k], ++ok;
+    }
+    REQUIRE(ok > 0);
+    REQUIRE(ok < 12);
+    CHECK_THAT(r.out, Contains(std::to_string(12 - ok) + " of 12 samples failed; the moments are over the " +
+                               std::to_string(ok) + " successful samples"));
+    CHECK(mean.values.at(0) == Approx(sum / static_cast<double>(ok)).epsilon(1e-14));
+  }
 }

@@ -88,7 +88,7 @@ TEST_CASE("sparse_grid pce: the surrogate's variance is exact for polynomials of
       }
 }
 
-TEST_CASE("sparse_grid pce: level 1 misses the mixed term's variance; the quadrature of f^2 is not a projection",
+TEST_CASE("sparse_grid pce: x1 x2 has no variance in the level-1 surrogate and its exact variance at level 2",
           "[sampling][smolyak][pce]") {
   // f = x1 x2 (N(0,1) each): Var = 1. Level 1 keeps no p_1 p_1 product, so the surrogate has no variance
   // from it, while level 2 has it exactly.

@@ -5,7 +5,7 @@
 // the same command recomputes none of them.
 // Under mpirun the ranks share each level's samples (dynamic scheduling, mpi_work_queue.hpp) and rank 0
 // writes the results; --shard K/N runs a fixed part for batch arrays, --merge the statistics afterwards.
-#include <chrono>
+#include <cmath>
 #include <iostream>
 #include <utility>
 
@@ -70,8 +70,10 @@ void printLevels(const std::vector<LevelResult>& levels, const ResultLayout& lay
   // pseudo-spectral surrogate, "+-se" the Monte Carlo standard errors.
   std::vector<std::size_t> shown;
   for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
-    bool varies = false;
-    for (const SampleRecord& s : levels.back().records) varies |= s.scalars[i] != levels.back().records[0].scalars[i];
+    bool varies = false;  // among the successful samples (a failed one holds NaN)
+    std::optional<double> first;
+    for (const SampleRecord& s : levels.back().records)
+      if (!std::isnan(s.scalars[i])) varies |= first.value_or(s.scalars[i]) != s.scalars[i], first = s.scalars[i];
     if (!varies) continue;
     shown.push_back(i);
     header.push_back("mean " + layout.scalars[i].name);
@@ -125,16 +127,16 @@ std::size_t printFailures(const std::vector<LevelResult>& levels, SampleRule rul
               << " samples failed; "
               << (rule == SampleRule::MonteCarlo
                       ? "the moments are over the " + std::to_string(r.records.size() - r.failures.size()) +
-                            " successful samples (equal weights)"
+                            " successful samples (equal weights: the law given success, biased if failing "
+                            "depends on the output)"
                       : std::string("no moments: the rule's weights do not allow dropping a node (NaN in the files)"))
               << '\n';
     for (const SampleFailure& f : r.failures) std::cout << "  " << f.message << '\n';
   }
+  if (total > 0)
+    std::cout << "A failed sample is finished as well: a restart does not retry it unless its .failed file in the "
+                 "sample directory is deleted.\n";
   return total;
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 int runStudy(const SampleOptions& options, const MpiSession& mpi) {
@@ -184,11 +186,10 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   std::vector<LevelResult> levels;
   LevelWork shardWork;
   for (std::uint64_t level : rule.levels) {
-    const auto start = std::chrono::steady_clock::now();
+    ProgressBar bar("level " + std::to_string(level), 1);  // drawn on a terminal only; times the level
     LevelPlan plan = planLevel(rule, space, level);
     LevelWork work;
     if (!options.merge) {
-      ProgressBar bar("level " + std::to_string(level), 1);
       const auto progress = [&](std::size_t index, std::size_t total) {
         if (root) bar.update(0, "sample " + std::to_string(index) + "/" + std::to_string(total));
       };
@@ -210,7 +211,7 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
     LevelResult r = study.collect(std::move(plan), rule.rule, level);
     r.computed = work.computed;
     r.reused = r.records.size() - work.computed;
-    r.seconds = secondsSince(start);
+    r.seconds = bar.elapsedSeconds();
     levels.push_back(std::move(r));
     writeStudyHdf5(out, description, study.layout(), levels);  // finished levels are on disk at once
     writeStudyCsv(csv, study.layout(), levels);
