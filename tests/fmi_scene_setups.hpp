@@ -1,0 +1,42 @@
+#pragma once
+// Each built-in scene set up on a coarse grid through the C ABI (Configuration Mode and parameters, not
+// yet initialized), for tests that run every scene: the point grids of the quasi-static scenes at 9 x 9
+// (glass-ceramic: the paper's plate at h = 16 um), 001's Plexiglass square at eps = 8 mm, h = eps/2, and
+// 001's beam at h = 3.125 mm. internalTimeStep stays 0: the dynamic scenes take 001's steps.
+#include <catch2/catch.hpp>
+
+#include "fmi_abi_support.hpp"
+
+inline void setUpCoarseScene(Session& s, std::int64_t scene) {
+  const auto grid = [&](std::uint64_t nx, std::uint64_t ny, std::uint64_t modes) {
+    REQUIRE(s.configure(nx, ny, modes) == fmi3OK);
+    REQUIRE(s.setInt64(PERISTEP_VR_SCENE, scene) == fmi3OK);
+  };
+  const auto domain = [&](double Lx, double Ly, double poissonRatio) {
+    REQUIRE(s.setFloat64(PERISTEP_VR_LX, {Lx}) == fmi3OK);
+    REQUIRE(s.setFloat64(PERISTEP_VR_LY, {Ly}) == fmi3OK);
+    REQUIRE(s.setFloat64(PERISTEP_VR_POISSON_RATIO, {poissonRatio}) == fmi3OK);
+  };
+  switch (scene) {
+    case PERISTEP_SCENE_SMOOTH: grid(9, 9, 1); return;
+    case PERISTEP_SCENE_COMPOSITE:
+    case PERISTEP_SCENE_INTERFACE_CRACK:
+    case PERISTEP_SCENE_KL_PLATE: grid(9, 9, 2); return;
+    case PERISTEP_SCENE_GLASS_CERAMIC:  // pure glass, which breaks from an opening of about 0.15 um
+      grid(51, 26, 1);
+      domain(800e-6, 400e-6, 0.25);
+      REQUIRE(s.setFloat64(PERISTEP_VR_CRYSTAL_FRACTION, {0.0}) == fmi3OK);
+      return;
+    case PERISTEP_SCENE_PLEXIGLASS_CRACK:
+      grid(25, 25, 1);
+      domain(0.1, 0.1, 0.25);
+      REQUIRE(s.setFloat64(PERISTEP_VR_DELTA_OVER_H, {2.0}) == fmi3OK);
+      return;
+    case PERISTEP_SCENE_BENDING_ONE_NOTCH:
+    case PERISTEP_SCENE_BENDING_TWO_NOTCHES:
+      grid(80, 16, 1);
+      domain(0.25, 0.05, 0.25);
+      return;
+  }
+  FAIL("no coarse set-up for scene " << scene);
+}
