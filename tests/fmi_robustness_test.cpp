@@ -115,6 +115,15 @@ TEST_CASE("a dynamic step beyond maxInternalSteps is refused up front and change
     CHECK(s.step(0, 2e-6) == fmi3OK);
     REQUIRE(s.fmu.fmi3FreeFMUState(s.instance, &before) == fmi3OK);
   }
+  SECTION("an adaptive integrator stops at the limit") {
+    REQUIRE(s.setInt64(PERISTEP_VR_TIME_INTEGRATOR, PERISTEP_INTEGRATOR_ARKODE_ERK) == fmi3OK);
+    REQUIRE(setUInt64(s, PERISTEP_VR_MAX_INTERNAL_STEPS, 10) == fmi3OK);
+    REQUIRE(s.initialize(0, 10) == fmi3OK);
+    CHECK(s.step(0, 2e-6) == fmi3Error);
+    REQUIRE(s.log.records.size() == 1);
+    INFO(s.log.records[0].message);
+    CHECK_THAT(s.log.records[0].message, Contains("fmi3DoStep"));
+  }
   SECTION("a raised limit lets the step run") {
     REQUIRE(setUInt64(s, PERISTEP_VR_MAX_INTERNAL_STEPS, 0) == fmi3OK);  // 0: no limit
     REQUIRE(s.initialize(0, 10) == fmi3OK);
