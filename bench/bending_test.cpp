@@ -12,10 +12,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "bench_cli.hpp"
 #include "energy_table.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
@@ -60,20 +60,24 @@ void printCrackBands(DynamicScene& scene, const std::vector<double>& u, double t
 
 int main(int argc, char** argv) {
   BendingSpec spec;
-  if (argc >= 3 && std::string(argv[argc - 2]) == "--load-depth-mm") {
-    spec.loadDepth = std::atof(argv[argc - 1]) * 1e-3;
-    argc -= 2;
-  }
-  if (argc < 6) {
-    std::fprintf(stderr, "usage: %s <cracks 1|2> <eps_mm> <eps/h> <dt_us> <T_us> [csv] [--load-depth-mm d]\n", argv[0]);
-    return 2;
-  }
+  double eps = 0, dt = 0, T = 0, loadDepth = spec.loadDepth * 1e3;
+  std::string csv;
+  CLI::App app{"bending_test: the pre-cracked beam under bending of 001 Sec. 6.2"};
+  app.add_option("cracks", spec.cracks, "number of pre-cracks")->required()->check(CLI::IsMember({1, 2}));
+  app.add_option("eps_mm", eps, "horizon eps [mm]")->required()->check(CLI::PositiveNumber);
+  app.add_option("eps_over_h", spec.meshRatio, "eps/h")->required()->check(CLI::PositiveNumber);
+  app.add_option("dt_us", dt, "time step [us]")->required()->check(CLI::PositiveNumber);
+  app.add_option("T_us", T, "end time [us]")->required()->check(CLI::PositiveNumber);
+  app.add_option("csv", csv, "write the energy table as CSV to this file");
+  app.add_option("--load-depth-mm", loadDepth, "depth of the loaded band under the top edge [mm]")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
   try {
-    spec.cracks = std::atoi(argv[1]);
-    spec.horizon = std::atof(argv[2]) * 1e-3;
-    spec.meshRatio = std::atof(argv[3]);
-    spec.timeStep = std::atof(argv[4]) * 1e-6;
-    spec.endTime = std::atof(argv[5]) * 1e-6;
+    spec.horizon = eps * 1e-3;
+    spec.timeStep = dt * 1e-6;
+    spec.endTime = T * 1e-6;
+    spec.loadDepth = loadDepth * 1e-3;
     DynamicScene scene = makeBendingTest(spec);
     std::printf("bending, %d pre-crack(s): eps = %g mm, h = %g mm, %zu points, %zu bonds, dt = %g us, load band %g mm deep\n",
                 spec.cracks, spec.horizon * 1e3, scene.h() * 1e3, scene.cloud.size(), scene.model->bonds().bonds(),
@@ -84,7 +88,7 @@ int main(int argc, char** argv) {
     DynamicRunResult r;
     std::vector<double> u;  // at the last report
     {
-      bench::EnergyTable table(scene.model->material().fractureEnergy(), argc > 6 ? argv[6] : nullptr);
+      bench::EnergyTable table(scene.model->material().fractureEnergy(), csv.empty() ? nullptr : csv.c_str());
       r = runDynamicScene(scene, o, [&](const TimeIntegrator& integrator, const EnergyRecord& e) {
         u.assign(integrator.displacement(), integrator.displacement() + scene.problem->dofs());
         table.row(e);

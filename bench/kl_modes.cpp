@@ -4,11 +4,10 @@
 //   kl_modes [--sides 32,50,100] [--dense-up-to 2500] [--kernel exponential|gaussian] [--l 0.2] [--modes 20]
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "core/errors.hpp"
+#include "bench_cli.hpp"
 #include "core/timer.hpp"
 #include "random/kl_field.hpp"
 
@@ -21,18 +20,17 @@ int main(int argc, char** argv) try {
   spec.correlationLength = 0.2;
   spec.standardDeviation = 1.0;
   spec.modes = 20;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--sides") {
-      sides.clear();
-      std::stringstream in(value);
-      for (std::string item; std::getline(in, item, ',');) sides.push_back(std::stoul(item));
-    } else if (key == "--dense-up-to") denseUpTo = std::stoul(value);
-    else if (key == "--kernel") spec.kind = value == "gaussian" ? CovarianceKind::Gaussian : CovarianceKind::Exponential;
-    else if (key == "--l") spec.correlationLength = std::stod(value);
-    else if (key == "--modes") spec.modes = std::stoul(value);
-    else throw InvalidInput("unknown option " + key);
-  }
+  std::string kernel = "exponential";
+  CLI::App app{"kl_modes: dense against randomized eigenpairs of the KL field"};
+  app.add_option("--sides", sides, "grid points per side, comma separated")->delimiter(',')->capture_default_str();
+  app.add_option("--dense-up-to", denseUpTo, "run the dense solver up to this many points")->capture_default_str();
+  app.add_option("--kernel", kernel, "covariance kernel")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exponential", "gaussian"}));
+  app.add_option("--l", spec.correlationLength, "correlation length")->capture_default_str();
+  app.add_option("--modes", spec.modes, "number of modes")->capture_default_str();
+  if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
+  spec.kind = kernel == "gaussian" ? CovarianceKind::Gaussian : CovarianceKind::Exponential;
   std::printf("# KL, %s kernel, l = %g, k = %zu, randomized p = %zu, q = %zu\n",
               spec.kind == CovarianceKind::Gaussian ? "gaussian" : "exponential", spec.correlationLength, spec.modes,
               spec.oversampling, spec.powerIterations);

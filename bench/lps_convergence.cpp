@@ -14,10 +14,11 @@
 #include <iostream>
 #include <memory>
 #include <numbers>
-#include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "bench_cli.hpp"
 #include "core/errors.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
@@ -34,39 +35,32 @@ struct Options {
   std::vector<int> levels{8, 16, 32, 64, 128, 256};
 };
 
-std::vector<int> parseList(const std::string& s) {
-  std::vector<int> v;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');) v.push_back(std::stoi(item));
-  return v;
-}
-
-Options parse(int argc, char** argv) {
+// The options, or the exit code when the program should stop here (--help, or a parse error).
+std::variant<Options, int> parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string key = argv[i];
-    if (i + 1 >= argc) throw InvalidInput("missing value after " + key);
-    const std::string value = argv[++i];
-    if (key == "--scene") o.scene = value;
-    else if (key == "--solver") o.solver = value;
-    else if (key == "--csv") o.csv = value;
-    else if (key == "--nu") o.nu = std::stod(value);
-    else if (key == "--xi") o.xi = std::stod(value);
-    else if (key == "--xi2") o.xi2 = std::stod(value);
-    else if (key == "--contrast") o.contrast = std::stod(value);
-    else if (key == "--delta-over-h") o.deltaOverH = std::stod(value);
-    else if (key == "--jitter") o.jitter = std::stod(value);
-    else if (key == "--levels") o.levels = parseList(value);
-    else throw InvalidInput("unknown option " + key);
-  }
-  if (o.scene != "smooth" && o.scene != "composite") throw InvalidInput("unknown scene " + o.scene);
+  CLI::App app{"lps_convergence: refinement study of the quasi-static LPS solver against an exact solution"};
+  app.add_option("--scene", o.scene, "Test 1 (smooth) or Test 2 (composite)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"smooth", "composite"}));
+  app.add_option("--nu", o.nu, "Poisson ratio")->capture_default_str();
+  app.add_option("--xi", o.xi, "random coordinate xi (xi1 of the composite)")->capture_default_str();
+  app.add_option("--xi2", o.xi2, "composite: second random coordinate")->capture_default_str();
+  app.add_option("--contrast", o.contrast, "composite: modulus contrast")->capture_default_str();
+  app.add_option("--levels", o.levels, "grid levels, comma separated")->delimiter(',')->capture_default_str();
+  app.add_option("--delta-over-h", o.deltaOverH, "horizon delta/h")->capture_default_str();
+  app.add_option("--jitter", o.jitter, "random displacement of the points, fraction of h")->capture_default_str();
+  app.add_option("--solver", o.solver, "umfpack, umfpack-metis, sparselu or bicgstab-ilut")->capture_default_str();
+  app.add_option("--csv", o.csv, "write the table as CSV to this file");
+  if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
   return o;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) try {
-  const Options o = parse(argc, argv);
+  const std::variant<Options, int> parsed = parse(argc, argv);
+  if (const int* code = std::get_if<int>(&parsed)) return *code;
+  const Options& o = std::get<Options>(parsed);
   const bool smooth = o.scene == "smooth";
   std::unique_ptr<ElasticScene> scene;
   if (smooth) scene = std::make_unique<SmoothScene>(o.nu, o.xi);

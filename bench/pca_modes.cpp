@@ -15,11 +15,10 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "core/errors.hpp"
+#include "bench_cli.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
 #include "geometry/point_cloud.hpp"
@@ -30,13 +29,6 @@
 using namespace peristep;
 
 namespace {
-
-std::vector<double> numbers(const std::string& list) {
-  std::vector<double> out;
-  std::stringstream in(list);
-  for (std::string item; std::getline(in, item, ',');) out.push_back(std::stod(item));
-  return out;
-}
 
 // The glass-ceramic specimen's cloud at spacing h (800 x 400 um, collar, free side edges).
 PointCloud specimenCloud(double hUm) {
@@ -62,19 +54,17 @@ int main(int argc, char** argv) try {
   std::size_t modes = 20, oversampling = defaults.oversampling, power = defaults.powerIterations, checkPower = 0,
               denseCheck = 0;
   std::string csvPath;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--h-um") hs = numbers(value);
-    else if (key == "--n") ns = numbers(value);
-    else if (key == "--fraction") fraction = std::stod(value);
-    else if (key == "--modes") modes = std::stoul(value);
-    else if (key == "--oversampling") oversampling = std::stoul(value);
-    else if (key == "--power") power = std::stoul(value);
-    else if (key == "--check-power") checkPower = std::stoul(value);
-    else if (key == "--dense-check") denseCheck = std::stoul(value);
-    else if (key == "--csv") csvPath = value;
-    else throw InvalidInput("unknown option " + key);
-  }
+  CLI::App app{"pca_modes: streamed PCA of glass-ceramic microstructures"};
+  app.add_option("--h-um", hs, "grid spacings [um], comma separated")->delimiter(',')->capture_default_str();
+  app.add_option("--n", ns, "numbers of realizations, comma separated")->delimiter(',')->capture_default_str();
+  app.add_option("--fraction", fraction, "crystal volume fraction")->capture_default_str();
+  app.add_option("--modes", modes, "number of modes k")->capture_default_str();
+  app.add_option("--oversampling", oversampling, "oversampling p")->capture_default_str();
+  app.add_option("--power", power, "subspace iterations q")->capture_default_str();
+  app.add_option("--check-power", checkPower, "repeat each run with this many subspace iterations")->capture_default_str();
+  app.add_option("--dense-check", denseCheck, "1: form the covariance and compare (small grids only)")->capture_default_str();
+  app.add_option("--csv", csvPath, "write the table as CSV to this file");
+  if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
   std::ofstream csv;
   if (!csvPath.empty()) {
     csv.open(csvPath);

@@ -12,11 +12,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstddef>
-#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "bench_cli.hpp"
 #include "energy_table.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
@@ -134,15 +134,26 @@ int energy(double eps, double ratio, double T, const char* csvPath) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string mode = argc > 1 ? argv[1] : "";
+  CLI::App app{"plexiglass_crack: the Plexiglass crack of 001 Sec. 6.1"};
+  app.require_subcommand(1);
+  double eps = 0, ratio = 0, T = 0;
+  std::string csv;
+  CLI::App* ratesCmd = app.add_subcommand("rates", "rate estimate 001:(106) from h = eps/2, eps/4, eps/8");
+  ratesCmd->add_option("eps_mm", eps, "horizon eps [mm]")->required()->check(CLI::PositiveNumber);
+  ratesCmd->add_option("T_us", T, "end time [us]")->required()->check(CLI::PositiveNumber);
+  ratesCmd->add_option("csv", csv, "write the table as CSV to this file");
+  CLI::App* energyCmd = app.add_subcommand("energy", "energy bookkeeping and Griffith check");
+  energyCmd->add_option("eps_mm", eps, "horizon eps [mm]")->required()->check(CLI::PositiveNumber);
+  energyCmd->add_option("eps_over_h", ratio, "eps/h")->required()->check(CLI::PositiveNumber);
+  energyCmd->add_option("T_us", T, "end time [us]")->required()->check(CLI::PositiveNumber);
+  energyCmd->add_option("csv", csv, "write the table as CSV to this file");
+  if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
+  const char* csvPath = csv.empty() ? nullptr : csv.c_str();
   try {
-    if (mode == "rates" && argc >= 4) return rates(std::atof(argv[2]) * 1e-3, std::atof(argv[3]) * 1e-6, argc > 4 ? argv[4] : nullptr);
-    if (mode == "energy" && argc >= 5)
-      return energy(std::atof(argv[2]) * 1e-3, std::atof(argv[3]), std::atof(argv[4]) * 1e-6, argc > 5 ? argv[5] : nullptr);
+    if (ratesCmd->parsed()) return rates(eps * 1e-3, T * 1e-6, csvPath);
+    return energy(eps * 1e-3, ratio, T * 1e-6, csvPath);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
-  std::fprintf(stderr, "usage: %s rates <eps_mm> <T_us> [csv] | energy <eps_mm> <eps/h> <T_us> [csv]\n", argv[0]);
-  return 2;
 }

@@ -8,10 +8,10 @@
 // reference at a quarter of the stability limit (whose own error is estimated from half of it).
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "bench_cli.hpp"
 #include "core/timer.hpp"
 #include "scenes/stiff_inclusions.hpp"
 #include "solvers/central_difference.hpp"
@@ -51,7 +51,12 @@ double relativeError(const std::vector<double>& u, const std::vector<double>& re
 }  // namespace
 
 int main(int argc, char** argv) {
-  const double contrast = argc > 1 ? std::atof(argv[1]) : 1e3;
+  CLI::App app{"stiff_integrators: error against run time of the integrators on the stiff-inclusion plate"};
+  double contrast = 1e3;
+  std::string csvPath;
+  app.add_option("contrast", contrast, "modulus contrast of the inclusions")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("csv", csvPath, "write the table as CSV to this file");
+  if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
   StiffInclusionsSpec spec;
   spec.contrast = contrast;
   DynamicScene probe = makeStiffInclusions(spec);
@@ -89,7 +94,7 @@ int main(int argc, char** argv) {
     std::snprintf(setting, sizeof setting, "rtol = %.0e", tol);
     runs.push_back(run(contrast, "cvode_bdf", tolerances(tol), setting));
   }
-  std::FILE* csv = argc > 2 ? std::fopen(argv[2], "w") : nullptr;
+  std::FILE* csv = csvPath.empty() ? nullptr : std::fopen(csvPath.c_str(), "w");
   if (csv) std::fprintf(csv, "method,setting,steps,rhs,jv,linear_iterations,factorizations,seconds,rel_error\n");
   std::printf("%-20s %-22s %8s %9s %9s %8s %6s %9s %11s\n", "method", "setting", "steps", "rhs", "J v", "lin it",
               "LDLT", "wall s", "rel error");

@@ -11,10 +11,11 @@
 #include <fstream>
 #include <iostream>
 #include <numbers>
-#include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "bench_cli.hpp"
 #include "core/errors.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
@@ -30,31 +31,25 @@ struct Options {
   std::string csv;
 };
 
-Options parse(int argc, char** argv) {
+// The options, or the exit code when the program should stop here (--help, or a parse error).
+std::variant<Options, int> parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string key = argv[i];
-    if (i + 1 >= argc) throw InvalidInput("missing value after " + key);
-    const std::string value = argv[++i];
-    if (key == "--nu") o.nu = std::stod(value);
-    else if (key == "--xi1") o.xi1 = std::stod(value);
-    else if (key == "--xi2") o.xi2 = std::stod(value);
-    else if (key == "--csv") o.csv = value;
-    else if (key == "--levels") {
-      o.levels.clear();
-      std::stringstream in(value);
-      for (std::string item; std::getline(in, item, ',');) o.levels.push_back(std::stoi(item));
-    } else {
-      throw InvalidInput("unknown option " + key);
-    }
-  }
+  CLI::App app{"test3_convergence: refinement study of Test 3 (000 Sec. 4.3) against the exact near-tip field"};
+  app.add_option("--nu", o.nu, "Poisson ratio")->capture_default_str();
+  app.add_option("--xi1", o.xi1, "random coordinate xi1")->capture_default_str();
+  app.add_option("--xi2", o.xi2, "random coordinate xi2")->capture_default_str();
+  app.add_option("--levels", o.levels, "grid levels (h = pi/level), comma separated")->delimiter(',')->capture_default_str();
+  app.add_option("--csv", o.csv, "write the table as CSV to this file");
+  if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
   return o;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) try {
-  const Options o = parse(argc, argv);
+  const std::variant<Options, int> parsed = parse(argc, argv);
+  if (const int* code = std::get_if<int>(&parsed)) return *code;
+  const Options& o = std::get<Options>(parsed);
   std::ofstream csv;
   if (!o.csv.empty()) {
     csv.open(o.csv);
