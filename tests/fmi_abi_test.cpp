@@ -106,14 +106,6 @@ ConcurrentRuns runConcurrently(std::int64_t solver) {
   return r;
 }
 
-double maxDifference(const std::vector<Outputs>& x, const std::vector<Outputs>& y) {
-  double d = 0;
-  for (std::size_t k = 0; k < x.size(); ++k)
-    for (std::size_t p = 0; p < x[k].ux.size(); ++p)
-      d = std::max({d, std::abs(x[k].ux[p] - y[k].ux[p]), std::abs(x[k].uy[p] - y[k].uy[p])});
-  return d;
-}
-
 }  // namespace
 
 TEST_CASE("PeriStep.so exports every FMI 3.0 function and nothing else", "[abi]") {
