@@ -1,5 +1,6 @@
 #include "fmu_instance.hpp"
 
+#include <cstdlib>
 #include <iostream>
 #include <utility>
 
@@ -43,11 +44,30 @@ struct FmuInstance::LogSink {
   std::string instanceName;
   bool verbose = false;
   std::vector<Message> messages;
+  decltype(Options::progress) progress;
+
+  // 'progress: <phase> <done>/<total>' -> progress(phase, done, total); false for any other text.
+  bool forwardProgress(std::string_view text) const {
+    constexpr std::string_view prefix = "progress: ";
+    if (!progress || !text.starts_with(prefix)) return false;
+    text.remove_prefix(prefix.size());
+    const auto space = text.rfind(' '), slash = text.rfind('/');
+    if (space == std::string_view::npos || slash == std::string_view::npos || slash < space) return false;
+    const std::string done(text.substr(space + 1, slash - space - 1)), total(text.substr(slash + 1));
+    char *endDone = nullptr, *endTotal = nullptr;
+    const auto d = std::strtoull(done.c_str(), &endDone, 10), t = std::strtoull(total.c_str(), &endTotal, 10);
+    if (done.empty() || total.empty() || *endDone || *endTotal) return false;
+    progress(std::string(text.substr(0, space)), d, t);
+    return true;
+  }
 
   // Called by the component from inside an fmi3 call: it must not throw back across the C ABI.
   static void callback(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category, fmi3String message) {
     try {
-      static_cast<LogSink*>(env)->messages.push_back({status, category ? category : "", message ? message : ""});
+      auto* sink = static_cast<LogSink*>(env);
+      const std::string_view cat = category ? category : "";
+      if (cat == "logProgress" && sink->forwardProgress(message ? message : "")) return;
+      sink->messages.push_back({status, std::string(cat), message ? message : ""});
     } catch (...) {
     }
   }
@@ -63,6 +83,15 @@ FmuInstance::FmuInstance(const FmuLibrary& library, const ModelDescription& md, 
       /*loggingOn=*/true, /*eventModeUsed=*/false, /*earlyReturnAllowed=*/false,
       /*requiredIntermediateVariables=*/nullptr, 0, log_.get(), &LogSink::callback, /*intermediateUpdate=*/nullptr);
   if (!instance_) check(fmi3Error, "fmi3InstantiateCoSimulation");
+  if (options.progress) {
+    log_->progress = options.progress;
+    fmi3String categories[] = {"logProgress"};
+    // A courtesy: a component without the category refuses it, and then runs without progress.
+    if (api_.SetDebugLogging(instance_, fmi3True, 1, categories) != fmi3OK) {
+      log_->messages.clear();
+      log_->progress = nullptr;
+    }
+  }
 }
 
 FmuInstance::~FmuInstance() {

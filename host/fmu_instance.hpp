@@ -3,6 +3,7 @@
 // one rule for every call: a status other than fmi3OK/fmi3Warning throws RunError carrying what the
 // component logged, so no failure passes unnoticed and the user sees the component's own reason.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ class FmuInstance {
     std::string instanceName = "peristep";
     std::string resourcePath;  // empty: passed as NULL
     bool verbose = false;      // echo every logged message, not only warnings
+    // Receives the component's 'progress: <phase> <done>/<total>' messages (category logProgress) while a
+    // call runs (total 0: open-ended, e.g. sub-iterations); set, it switches that category on.
+    std::function<void(const std::string& phase, std::uint64_t done, std::uint64_t total)> progress;
   };
 
   FmuInstance(const FmuLibrary& library, const ModelDescription& md, const Options& options);

@@ -66,7 +66,15 @@ GlassCeramicSpec specimenSpec(const SceneParameters& p, const PcaModes* pca) {
 class GlassCeramicRunner final : public Runner {
  public:
   explicit GlassCeramicRunner(const SceneParameters& p)
-      : pca_(p.pcaRealizations > 0 ? crystalPca(p) : nullptr), specimen_(specimenSpec(p, pca_.get())) {}
+      : pca_(p.pcaRealizations > 0 ? crystalPca(p) : nullptr), specimen_(specimenSpec(p, pca_.get())) {
+    // Inside a load step the crack may run for hundreds of sub-iterations at one load: report each, and
+    // the bonds broken so far in the step (open-ended counts: total 0).
+    if (p.progress)
+      specimen_.onSubIteration([hook = p.progress](const LoadStepReport& r) {
+        hook("subIterations", static_cast<std::uint64_t>(r.subIterations), 0);
+        hook("brokenBonds", r.newlyBroken, 0);
+      });
+  }
   const PointCloud& cloud() const override { return specimen_.solver().discretization().cloud; }
   void advance(const SceneInputs& in) override { specimen_.advance(in.loadDisplacement); }
   std::vector<double> ux() const override { return specimen_.ux(); }

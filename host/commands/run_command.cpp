@@ -1,7 +1,9 @@
 // `peristep run [SCENE] [--fmu PATH] [--out FILE]`: one loading scenario, results to HDF5 + XDMF, the
 // history of the scalar outputs to CSV, a picture of the last step and a plot of the history (gnuplot).
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <variant>
 
@@ -114,14 +116,30 @@ int runCommand(const RunOptions& options) {
   FmuInstance::Options instanceOptions;
   instanceOptions.resourcePath = fmu.archive.resourcePath();
   instanceOptions.verbose = options.verbose;
+  // The bar moves inside a step too: the component reports sub-iterations, broken bonds or internal
+  // time steps of the step in progress (issue 17: one load step of a full-size specimen can take an hour).
+  ProgressBar* liveBar = nullptr;
+  std::uint64_t stepsDone = 0;
+  std::vector<std::pair<std::string, std::string>> phases;  // of the step in progress, latest count each
+  instanceOptions.progress = [&](const std::string& phase, std::uint64_t done, std::uint64_t total) {
+    if (!liveBar) return;
+    const std::string count = std::to_string(done) + (total ? "/" + std::to_string(total) : "");
+    auto it = std::find_if(phases.begin(), phases.end(), [&](const auto& p) { return p.first == phase; });
+    if (it == phases.end()) phases.emplace_back(phase, count);
+    else it->second = count;
+    std::string note = "step " + std::to_string(stepsDone + 1) + ":";
+    for (const auto& [name, value] : phases) note += " " + name + " " + value;
+    liveBar->update(stepsDone, note);
+  };
   // Everything that can be refused (parameters, initialization) happens before a file is touched.
   Simulation simulation(library, fmu.md, scene, instanceOptions);
   const ResultLayout layout = simulation.layout();
 
   ResultFiles files(out, layout);
   std::vector<StepValues> recorded;
+  std::optional<ProgressBar> bar;  // outlives the try: the component may report progress until the last call
   try {
-    ProgressBar bar("run", simulation.schedule().size());
+    liveBar = &bar.emplace("run", simulation.schedule().size());
     for (const Increment& inc : simulation.schedule()) {
       if (!simulation.mayContinue()) {
         std::cerr << "peristep: the component asked to stop after step " << recorded.size() << '\n';
@@ -133,9 +151,13 @@ int runCommand(const RunOptions& options) {
       recorded.push_back(std::move(step));
       std::ostringstream note;
       note << "t = " << recorded.back().time;
-      bar.update(inc.index, note.str());
+      stepsDone = inc.index;
+      phases.clear();
+      bar->update(inc.index, note.str());
     }
     simulation.terminate();
+    liveBar = nullptr;
+    bar.reset();  // clears the bar before the summary
     files.commit();
   } catch (const RunError& e) {
     const std::filesystem::path kept = files.abandon();
