@@ -21,7 +21,6 @@
 // --png draws the final damage over the microstructure with the host's colours (the picture
 // `peristep run` leaves), so one long run yields both the numbers and the picture.
 // h = 2 um is the paper's full size (413 x 213 = 87969 points with the collar).
-#include <CLI/CLI.hpp>
 #include <malloc.h>
 
 #include <algorithm>
@@ -34,6 +33,7 @@
 #include <limits>
 #include <string>
 
+#include "bench_cli.hpp"
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
 #include "damage_picture.hpp"
@@ -142,11 +142,7 @@ int main(int argc, char** argv) try {
   app.add_option("--png", pngPath, "final damage picture (PNG)");
   app.add_option("--checkpoint", checkpointPath, "checkpoint file: saved while running, continued from if present");
   app.add_option("--checkpoint-minutes", checkpointMinutes, "minutes between checkpoints")->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);  // --help prints and returns 0; an unknown or incomplete option is an error
-  }
+  if (const auto stop = peristep::bench::parseArguments(app, argc, argv)) return *stop;
   GlassCeramicSpec spec;
   spec.grid.nx = static_cast<std::size_t>(std::lround(800.0 / hUm)) + 1;
   spec.grid.ny = static_cast<std::size_t>(std::lround(400.0 / hUm)) + 1;
