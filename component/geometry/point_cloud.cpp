@@ -32,8 +32,7 @@ PointCloud makeRectangle(const GridSpec& spec) {
   c.delta = spec.delta();
   c.nx = spec.nx;
   c.ny = spec.ny;
-  // 000 Sec. 2.1: u is prescribed on BBOmega, a collar of thickness 2*delta.
-  c.layers = spec.collar ? static_cast<std::size_t>(std::ceil(2.0 * spec.deltaOverH - 1e-9)) : 0;
+  c.layers = spec.collar ? collarLayers(spec.deltaOverH) : 0;
   const std::size_t gx = c.nx + 2 * c.layers, gy = c.ny + 2 * c.layers;
   const std::size_t n = gx * gy;
   c.x.resize(n);

@@ -1,5 +1,6 @@
 #pragma once
 // Point clouds on a rectangular domain with a Dirichlet collar (000 Sec. 2.1, Sec. 3.1).
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -50,6 +51,11 @@ struct PointCloud {
   // are free. The corner blocks stay with the top and bottom collars.
   void freeSideEdges();
 };
+
+// 000 Sec. 2.1: u is prescribed on a collar of thickness 2 delta, this many layers on each side.
+inline std::size_t collarLayers(double deltaOverH) {
+  return static_cast<std::size_t>(std::ceil(2.0 * deltaOverH - 1e-9));
+}
 
 PointCloud makeRectangle(const GridSpec& spec);
 

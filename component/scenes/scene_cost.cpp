@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/errors.hpp"
+#include "geometry/point_cloud.hpp"
 #include "scenes/microstructure.hpp"
 
 namespace peristep {
@@ -25,6 +26,12 @@ std::string text(double x) {
   return buf;
 }
 
+// Points of the grid with its collar (geometry/point_cloud.hpp).
+double collaredPoints(const GridSpec& g) {
+  const double layers = static_cast<double>(collarLayers(g.deltaOverH));
+  return (static_cast<double>(g.nx) + 2 * layers) * (static_cast<double>(g.ny) + 2 * layers);
+}
+
 struct Part {
   double bytes = 0, flops = 0;
   std::string what;
@@ -39,8 +46,8 @@ struct Part {
 // on 33 x 33: 73 s reported in issue 13, 70 estimated).
 Part lpsSetUp(const GridSpec& g) {
   const double deltaOverH = g.deltaOverH, nx = static_cast<double>(g.nx), ny = static_cast<double>(g.ny);
-  const double layers = std::ceil(2.0 * deltaOverH - 1e-9), inner = std::ceil(deltaOverH - 1e-9);
-  const double points = (nx + 2 * layers) * (ny + 2 * layers), domain = nx * ny;
+  const double inner = std::ceil(deltaOverH - 1e-9);
+  const double points = collaredPoints(g), domain = nx * ny;
   const double neighbours = std::numbers::pi * deltaOverH * deltaOverH;
   const double unknowns = 2 * domain + (nx + 2 * inner) * (ny + 2 * inner);
   const double entries = 8 * neighbours * domain;
@@ -74,8 +81,7 @@ Part microstructure(const SceneParameters& p, double realizations) {
 // The streamed PCA (random/microstructure_pca.hpp): q + 2 passes over n realizations, two block
 // products of M x (k + p) per realization and pass, at about a third of the LU's flop rate.
 Part pca(const SceneParameters& p) {
-  const double layers = std::ceil(2.0 * p.grid.deltaOverH - 1e-9);
-  const double M = (static_cast<double>(p.grid.nx) + 2 * layers) * (static_cast<double>(p.grid.ny) + 2 * layers);
+  const double M = collaredPoints(p.grid);
   const double n = static_cast<double>(p.pcaRealizations), l = static_cast<double>(p.xi.size()) + 20, passes = 8;
   Part m = microstructure(p, n * passes);
   m.flops += 3 * passes * n * 2 * M * l;
@@ -87,8 +93,7 @@ Part pca(const SceneParameters& p) {
 // The KL modes on every point (random/kl_field.hpp): dense ~9 N^3 up to 1200 points, else 6 passes of
 // N^2 kernel evaluations (~20 flop) times the block of k + 20 columns.
 Part klField(const SceneParameters& p) {
-  const double layers = std::ceil(2.0 * p.grid.deltaOverH - 1e-9);
-  const double N = (static_cast<double>(p.grid.nx) + 2 * layers) * (static_cast<double>(p.grid.ny) + 2 * layers);
+  const double N = collaredPoints(p.grid);
   const double l = static_cast<double>(p.xi.size()) + 20;
   Part m;
   m.flops = N <= 1200 ? 9 * N * N * N : 6 * N * N * (20 + 2 * l);
