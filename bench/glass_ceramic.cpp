@@ -2,7 +2,7 @@
 // shares, K_IC (000:(5.2)-(5.3)), wall time and peak memory; write the load-displacement curve as CSV.
 //
 //   glass_ceramic [--h-um 8] [--fraction 0.2] [--seed 1] [--max-load-um 1] [--step-um 0.004]
-//                 [--solver umfpack] [--reference] [--csv curve.csv] [--png damage.png]
+//                 [--solver umfpack] [--driver zone|stale|reference] [--csv curve.csv] [--png damage.png]
 //                 [--checkpoint state.bin] [--checkpoint-minutes 10]      (--help lists them)
 //
 // --checkpoint writes the run's state to that file (atomically) every 10 minutes or so, also inside a load
@@ -10,7 +10,8 @@
 // run can be spread over several sittings (under other options it refuses; remove the file to start
 // afresh). Wall time and the profile add up over the sittings.
 //
-// --reference runs the reference driver (a new factorization at every change of the matrix, no GMRES);
+// --driver reference runs the reference driver (a new factorization at every change of the matrix, no GMRES;
+// --reference is short for it), --driver stale the GMRES driver that preceded the crack zone;
 // the "crack history" hash printed at the end is equal for two runs exactly when they broke the same
 // bonds in the same order at every load step.
 //
@@ -28,6 +29,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -75,7 +77,7 @@ double oneFactorizationSeconds(const GlassCeramicSpecimen& g, const std::string&
 struct RunOptions {
   double hUm, fraction, stepUm;
   std::uint64_t seed;
-  bool reference;
+  FactorizationReuse driver;
   bool operator==(const RunOptions&) const = default;
 };
 
@@ -129,7 +131,7 @@ int main(int argc, char** argv) try {
   double hUm = 8, fraction = 0.2, maxLoadUm = 1.0, stepUm = 0.004, checkpointMinutes = 10;
   std::uint64_t seed = 1;
   bool reference = false;
-  std::string solver = "umfpack", csvPath, pngPath, checkpointPath;
+  std::string driver = "zone", solver = "umfpack", csvPath, pngPath, checkpointPath;
   CLI::App app{"glass_ceramic: the glass-ceramic fracture specimen of 000 Sec. 5, with a profile of the driver"};
   app.add_option("--h-um", hUm, "grid spacing h in um (2 = the paper's full size)")->capture_default_str();
   app.add_option("--fraction", fraction, "target crystal fraction")->capture_default_str();
@@ -137,7 +139,15 @@ int main(int argc, char** argv) try {
   app.add_option("--max-load-um", maxLoadUm, "largest opening U_D in um")->capture_default_str();
   app.add_option("--step-um", stepUm, "load increment in um")->capture_default_str();
   app.add_option("--solver", solver, "sparse solver")->capture_default_str()->check(CLI::IsMember(linearSolverNames()));
-  app.add_flag("--reference", reference, "reference driver: refactorize at every change of the matrix, no GMRES");
+  const std::map<std::string, FactorizationReuse> drivers{{"zone", FactorizationReuse::CrackZone},
+                                                          {"stale", FactorizationReuse::StaleAsPreconditioner},
+                                                          {"reference", FactorizationReuse::RefactorizeEveryChange}};
+  app.add_option("--driver", driver,
+                 "zone: crack-zone Schur complement (production); stale: GMRES with an older factorization; "
+                 "reference: refactorize at every change of the matrix")
+      ->capture_default_str()
+      ->check(CLI::IsMember(drivers));
+  app.add_flag("--reference", reference, "short for --driver reference");
   app.add_option("--csv", csvPath, "load-displacement curve and per-step profile (CSV)");
   app.add_option("--png", pngPath, "final damage picture (PNG)");
   app.add_option("--checkpoint", checkpointPath, "checkpoint file: saved while running, continued from if present");
@@ -149,7 +159,8 @@ int main(int argc, char** argv) try {
   spec.crystalFraction = fraction;
   spec.seed = seed;
   spec.linearSolver = solver;
-  if (reference) spec.reuse = FactorizationReuse::RefactorizeEveryChange;
+  if (reference) driver = "reference";
+  spec.reuse = drivers.at(driver);
 
   Stopwatch total;
   GlassCeramicSpecimen g(spec);
@@ -159,10 +170,10 @@ int main(int argc, char** argv) try {
   Stopwatch timing;
   const double factorizationSeconds = oneFactorizationSeconds(g, solver);
   const double timingSeconds = timing.seconds();  // not part of the specimen's wall time
-  std::printf("# driver: %s; one factorization of the initial matrix %.2f s (median of 3)\n",
-              reference ? "reference (refactorize at every change)" : "production", factorizationSeconds);
+  std::printf("# driver: %s; one factorization of the initial matrix (%s) %.2f s (median of 3)\n", driver.c_str(),
+              solver.c_str(), factorizationSeconds);
   Progress run;
-  run.options = {hUm, fraction, stepUm, seed, reference};
+  run.options = {hUm, fraction, stepUm, seed, spec.reuse};
   const bool resumed = !checkpointPath.empty() && std::filesystem::exists(checkpointPath);
   if (resumed) {
     run = readCheckpoint(checkpointPath, run.options, g);
@@ -206,10 +217,10 @@ int main(int argc, char** argv) try {
       std::printf("%9.3f %14.6e %8zu %5d %5d %6d %8.1f\n", U * 1e6, g.reactionForce(), broken, r.subIterations,
                   r.factorizations, r.krylovIterations, elapsed());
   }
-  std::printf("profile: %d load steps, %d solves, %d factorizations %.1f s, %d GMRES iterations, solves %.1f s, "
-              "assembly %.1f s, bond checks %.1f s\n",
+  std::printf("profile: %d load steps, %d solves, %d factorizations %.1f s, %d GMRES iterations, %d dense zone LUs, "
+              "solves %.1f s, assembly %.1f s, bond checks %.1f s\n",
               run.step - 1, sum.subIterations, sum.factorizations, sum.factorizationSeconds, sum.krylovIterations,
-              sum.solveSeconds, sum.assemblySeconds, sum.bondCheckSeconds);
+              sum.denseFactorizations, sum.solveSeconds, sum.assemblySeconds, sum.bondCheckSeconds);
   std::printf("factorization ratio: wall %.1f s / one factorization %.2f s = %.1f\n", elapsed(), factorizationSeconds,
               elapsed() / factorizationSeconds);
   std::uint64_t history = run.history;

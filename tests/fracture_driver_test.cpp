@@ -1,4 +1,4 @@
-// The production fracture driver (GMRES preconditioned by an older factorization) against the reference
+// The production fracture driver (crack zone) and the GMRES driver that preceded it against the reference
 // that refactorizes at every change of the matrix: the same crack, bond for bond, at every load step.
 #include <catch2/catch.hpp>
 #include <vector>
@@ -24,7 +24,7 @@ std::vector<std::vector<std::size_t>> crackHistory(const GlassCeramicSpec& spec,
 
 }  // namespace
 
-TEST_CASE("glass-ceramic at h = 16 um: the production driver breaks the reference driver's bonds in the same "
+TEST_CASE("glass-ceramic at h = 16 um: the production drivers break the reference driver's bonds in the same "
           "order at every load step",
           "[fracture][driver]") {
   GlassCeramicSpec spec;
@@ -32,6 +32,8 @@ TEST_CASE("glass-ceramic at h = 16 um: the production driver breaks the referenc
   spec.grid.ny = 26;
   spec.seed = 1;
   spec.crystalFraction = GENERATE(0.2, 0.8);
+  const FactorizationReuse driver = GENERATE(FactorizationReuse::CrackZone, FactorizationReuse::StaleAsPreconditioner);
+  spec.reuse = driver;
   LoadStepReport production, reference;
   const auto fast = crackHistory(spec, production);
   spec.reuse = FactorizationReuse::RefactorizeEveryChange;
@@ -41,8 +43,7 @@ TEST_CASE("glass-ceramic at h = 16 um: the production driver breaks the referenc
               << " GMRES iterations; reference " << reference.subIterations << " solves, "
               << reference.factorizations << " factorizations");
   CHECK(reference.krylovIterations == 0);
-  CHECK(production.krylovIterations > 0);                       // the production driver did reuse ...
-  CHECK(production.factorizations < reference.factorizations);  // ... and saved factorizations by it
+  CHECK(production.factorizations < reference.factorizations);  // the driver reused factorizations
   REQUIRE(fast.size() == exact.size());
   for (std::size_t step = 0; step < fast.size(); ++step) {
     INFO("load step " << step + 1);

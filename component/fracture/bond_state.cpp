@@ -68,6 +68,30 @@ std::size_t breakCrossing(BondState& s, const PointCloud& c, const Neighbours& n
   return broken;
 }
 
+namespace {
+// The stretch of bond p -> nb.index[k] under the displacement u (000:(2.25)'s s, geometrically exact).
+double bondStretch(const PointCloud& c, const Neighbours& nb, const std::vector<double>& u, std::size_t p,
+                   std::size_t k) {
+  const std::uint32_t q = nb.index[k];
+  const double zx = c.x[q] - c.x[p], zy = c.y[q] - c.y[p];
+  const double r = std::hypot(zx, zy);
+  return (std::hypot(zx + u[2 * q] - u[2 * p], zy + u[2 * q + 1] - u[2 * p + 1]) - r) / r;
+}
+}  // namespace
+
+std::vector<double> stretchRatios(const BondState& s, const PointCloud& c, const Neighbours& nb,
+                                  const std::vector<double>& u) {
+  std::vector<double> ratio(c.size(), 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t ps = 0; ps < static_cast<std::ptrdiff_t>(c.size()); ++ps) {
+    const auto p = static_cast<std::size_t>(ps);
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k)
+      if (s.intact[k] && std::isfinite(s.criticalStretch[k]))
+        ratio[p] = std::max(ratio[p], bondStretch(c, nb, u, p, k) / s.criticalStretch[k]);
+  }
+  return ratio;
+}
+
 std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, const Neighbours& nb,
                                             const std::vector<double>& u) {
   // Threads check contiguous point ranges and the lists are joined in thread order: the result (and the
@@ -81,12 +105,8 @@ std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, c
     for (std::ptrdiff_t ps = 0; ps < static_cast<std::ptrdiff_t>(c.size()); ++ps) errors.capture([&] {
       const auto p = static_cast<std::size_t>(ps);
       for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
-        const std::uint32_t q = nb.index[k];
-        if (q < p || !s.intact[k] || !std::isfinite(s.criticalStretch[k])) continue;
-        const double zx = c.x[q] - c.x[p], zy = c.y[q] - c.y[p];
-        const double r = std::hypot(zx, zy);
-        const double stretch = (std::hypot(zx + u[2 * q] - u[2 * p], zy + u[2 * q + 1] - u[2 * p + 1]) - r) / r;
-        if (stretch > s.criticalStretch[k]) mine.push_back(k);
+        if (nb.index[k] < p || !s.intact[k] || !std::isfinite(s.criticalStretch[k])) continue;
+        if (bondStretch(c, nb, u, p, k) > s.criticalStretch[k]) mine.push_back(k);
       }
     });
   }

@@ -39,6 +39,11 @@ std::size_t breakCrossing(BondState& s, const PointCloud& cloud, const Neighbour
 std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& cloud, const Neighbours& nb,
                                             const std::vector<double>& u);
 
+// Per point, the largest stretch / s0 over its intact breakable bonds (0 if none): how close it is to
+// breaking; the fracture driver places its crack zone by it.
+std::vector<double> stretchRatios(const BondState& s, const PointCloud& cloud, const Neighbours& nb,
+                                  const std::vector<double>& u);
+
 // 000:(3.23) over the material bonds (bonds to Void are not counted): the broken fraction of a point's
 // bonds, on the domain points in image order.
 std::vector<double> damageField(const BondState& s, const PointCloud& cloud, const Neighbours& nb);

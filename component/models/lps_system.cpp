@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <omp.h>
+#include <stdexcept>
 
 #include "core/parallel_errors.hpp"
 #include "models/lps_material.hpp"
@@ -159,6 +160,73 @@ SurfaceFrame surfaceFrame(const PointCloud& c, const Neighbours& nb, const std::
   return f;
 }
 
+// The rows of point p (u_x, u_y, theta, those that are unknowns), each passed to emit(row index, row).
+template <class Emit>
+void pointRows(const PointCloud& c, const Neighbours& nb, const std::vector<double>& w,
+               const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& d,
+               const std::vector<std::uint8_t>* intact, std::size_t p, RowBuffer& row, Emit&& emit) {
+  if (d.u[p] < 0 && d.theta[p] < 0) return;
+  const auto gamma = [&](std::size_t k) { return intact ? static_cast<double>((*intact)[k]) : 1.0; };
+  const SurfaceFrame frame = surfaceFrame(c, nb, w, intact, p);
+  if (d.u[p] >= 0) {
+    // Momentum balance at a domain point, 000:(3.19) with the sign of 000:(2.5) (DESIGN 5.1):
+    //   sum_j K [ -(lambda-mu)_pj z (theta_p+theta_j) - 8 mu_pj z z^T/|z|^2 (u_j-u_p) ] w~_pj
+    // + theta_p sum_j K [ -2(lambda-mu) z - 4(lambda+2mu) n (z.n)(z.t)^2/|z|^2
+    //                     + 4 lambda n (z.n)^3/|z|^2 ] w^_pj = f_p,   z = x_j - x_p,
+    // the second line only where a free surface crosses the whole horizon (frame.neumann).
+    for (int a = 0; a < 2; ++a) {
+      row.clear();
+      double selfU[2] = {0.0, 0.0}, selfTheta = 0.0;
+      for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
+        const std::uint32_t q = nb.index[k];
+        const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
+        const double r2 = z[0] * z[0] + z[1] * z[1];
+        const double K = lpsKernel(std::sqrt(r2), c.delta);
+        const double lam = harmonicMean(lambda[p], lambda[q]), m = harmonicMean(mu[p], mu[q]);
+        const double g = gamma(k), Kw = K * w[k] * g, Kwb = K * w[k] * (1.0 - g);
+        if (Kwb != 0.0 && frame.neumann) {
+          const double zn = z[0] * frame.n[0] + z[1] * frame.n[1], zt = z[0] * frame.t[0] + z[1] * frame.t[1];
+          selfTheta += Kwb * (-2.0 * (lam - m) * z[a] - 4.0 * (lam + 2.0 * m) * frame.n[a] * zn * zt * zt / r2 +
+                              4.0 * lam * frame.n[a] * zn * zn * zn / r2);
+        }
+        if (c.isVoid(q)) continue;  // no unknowns there: only the free-surface term above
+        const double dil = (lam - m) * Kw * z[a];
+        const double shear = 8.0 * m * Kw * z[a] / r2;
+        row.unknown.emplace_back(d.theta[q], -dil);
+        selfTheta -= dil;
+        for (int b = 0; b < 2; ++b) {
+          addU(row, d, q, b, -shear * z[b]);
+          selfU[b] += shear * z[b];
+        }
+      }
+      row.unknown.emplace_back(d.u[p], selfU[0]);
+      row.unknown.emplace_back(d.u[p] + 1, selfU[1]);
+      row.unknown.emplace_back(d.theta[p], selfTheta);
+      emit(d.u[p] + a, row);
+    }
+  }
+  if (d.theta[p] >= 0) {
+    // Corrected nonlocal dilatation, 000:(3.20): theta_p - sum K (x_j-x_p).M_p (u_j-u_p) w~ = 0.
+    row.clear();
+    double selfU[2] = {0.0, 0.0};
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
+      const std::uint32_t q = nb.index[k];
+      if (c.isVoid(q)) continue;
+      const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
+      const double Kw = lpsKernel(std::hypot(z[0], z[1]), c.delta) * w[k] * gamma(k);
+      const double Mz[2] = {frame.M[0][0] * z[0] + frame.M[0][1] * z[1], frame.M[1][0] * z[0] + frame.M[1][1] * z[1]};
+      for (int b = 0; b < 2; ++b) {
+        addU(row, d, q, b, -Kw * Mz[b]);
+        selfU[b] += Kw * Mz[b];
+      }
+    }
+    addU(row, d, p, 0, selfU[0]);
+    addU(row, d, p, 1, selfU[1]);
+    row.unknown.emplace_back(d.theta[p], 1.0);
+    emit(d.theta[p], row);
+  }
+}
+
 }  // namespace
 
 LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vector<double>& w,
@@ -167,7 +235,6 @@ LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vect
   const int threads = omp_get_max_threads();
   std::vector<CsrPiece> piecesA(static_cast<std::size_t>(threads)), piecesB(static_cast<std::size_t>(threads));
   const std::size_t n = c.size();
-  const auto gamma = [&](std::size_t k) { return intact ? static_cast<double>((*intact)[k]) : 1.0; };
 
   ParallelErrors errors;  // CsrPiece::append allocates: a bad_alloc must not leave the region
 #pragma omp parallel num_threads(threads)
@@ -176,72 +243,38 @@ LpsSystem assembleLps(const PointCloud& c, const Neighbours& nb, const std::vect
     const std::size_t first = n * t / static_cast<std::size_t>(threads);
     const std::size_t last = n * (t + 1) / static_cast<std::size_t>(threads);
     RowBuffer row;
-    for (std::size_t p = first; p < last; ++p) {
-      if (d.u[p] < 0 && d.theta[p] < 0) continue;
-      const SurfaceFrame frame = surfaceFrame(c, nb, w, intact, p);
-      if (d.u[p] >= 0) {
-        // Momentum balance at a domain point, 000:(3.19) with the sign of 000:(2.5) (DESIGN 5.1):
-        //   sum_j K [ -(lambda-mu)_pj z (theta_p+theta_j) - 8 mu_pj z z^T/|z|^2 (u_j-u_p) ] w~_pj
-        // + theta_p sum_j K [ -2(lambda-mu) z - 4(lambda+2mu) n (z.n)(z.t)^2/|z|^2
-        //                     + 4 lambda n (z.n)^3/|z|^2 ] w^_pj = f_p,   z = x_j - x_p,
-        // the second line only where a free surface crosses the whole horizon (frame.neumann).
-        for (int a = 0; a < 2; ++a) {
-          row.clear();
-          double selfU[2] = {0.0, 0.0}, selfTheta = 0.0;
-          for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
-            const std::uint32_t q = nb.index[k];
-            const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
-            const double r2 = z[0] * z[0] + z[1] * z[1];
-            const double K = lpsKernel(std::sqrt(r2), c.delta);
-            const double lam = harmonicMean(lambda[p], lambda[q]), m = harmonicMean(mu[p], mu[q]);
-            const double g = gamma(k), Kw = K * w[k] * g, Kwb = K * w[k] * (1.0 - g);
-            if (Kwb != 0.0 && frame.neumann) {
-              const double zn = z[0] * frame.n[0] + z[1] * frame.n[1], zt = z[0] * frame.t[0] + z[1] * frame.t[1];
-              selfTheta += Kwb * (-2.0 * (lam - m) * z[a] - 4.0 * (lam + 2.0 * m) * frame.n[a] * zn * zt * zt / r2 +
-                                  4.0 * lam * frame.n[a] * zn * zn * zn / r2);
-            }
-            if (c.isVoid(q)) continue;  // no unknowns there: only the free-surface term above
-            const double dil = (lam - m) * Kw * z[a];
-            const double shear = 8.0 * m * Kw * z[a] / r2;
-            row.unknown.emplace_back(d.theta[q], -dil);
-            selfTheta -= dil;
-            for (int b = 0; b < 2; ++b) {
-              addU(row, d, q, b, -shear * z[b]);
-              selfU[b] += shear * z[b];
-            }
-          }
-          row.unknown.emplace_back(d.u[p], selfU[0]);
-          row.unknown.emplace_back(d.u[p] + 1, selfU[1]);
-          row.unknown.emplace_back(d.theta[p], selfTheta);
-          piecesA[t].append(row.unknown);
-          piecesB[t].append(row.prescribed);
-        }
-      }
-      if (d.theta[p] >= 0) {
-        // Corrected nonlocal dilatation, 000:(3.20): theta_p - sum K (x_j-x_p).M_p (u_j-u_p) w~ = 0.
-        row.clear();
-        double selfU[2] = {0.0, 0.0};
-        for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
-          const std::uint32_t q = nb.index[k];
-          if (c.isVoid(q)) continue;
-          const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
-          const double Kw = lpsKernel(std::hypot(z[0], z[1]), c.delta) * w[k] * gamma(k);
-          const double Mz[2] = {frame.M[0][0] * z[0] + frame.M[0][1] * z[1], frame.M[1][0] * z[0] + frame.M[1][1] * z[1]};
-          for (int b = 0; b < 2; ++b) {
-            addU(row, d, q, b, -Kw * Mz[b]);
-            selfU[b] += Kw * Mz[b];
-          }
-        }
-        addU(row, d, p, 0, selfU[0]);
-        addU(row, d, p, 1, selfU[1]);
-        row.unknown.emplace_back(d.theta[p], 1.0);
-        piecesA[t].append(row.unknown);
-        piecesB[t].append(row.prescribed);
-      }
-    }
+    for (std::size_t p = first; p < last; ++p)
+      pointRows(c, nb, w, lambda, mu, d, intact, p, row, [&](std::int64_t, RowBuffer& r) {
+        piecesA[t].append(r.unknown);
+        piecesB[t].append(r.prescribed);
+      });
   });
   errors.rethrow();
   return {concatenate(piecesA, d.size), concatenate(piecesB, 2 * static_cast<std::int64_t>(n))};
+}
+
+void reassembleLpsRows(const PointCloud& c, const Neighbours& nb, const std::vector<double>& w,
+                       const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& d,
+                       const std::vector<std::uint8_t>& intact, std::span<const std::size_t> points, LpsSystem& s) {
+  const auto overwrite = [](CsrMatrix& m, std::int64_t r, std::vector<std::pair<std::int64_t, double>>& row) {
+    std::sort(row.begin(), row.end());  // the order CsrPiece::append stores
+    const auto first = static_cast<std::size_t>(m.rowStart[static_cast<std::size_t>(r)]);
+    if (static_cast<std::size_t>(m.rowStart[static_cast<std::size_t>(r) + 1]) - first != row.size())
+      throw std::logic_error("reassembleLpsRows: the sparsity pattern of a row changed");
+    for (std::size_t k = 0; k < row.size(); ++k) m.value[first + k] = row[k].second;
+  };
+  ParallelErrors errors;
+#pragma omp parallel
+  errors.capture([&] {
+    RowBuffer row;
+#pragma omp for schedule(dynamic, 16)
+    for (std::size_t i = 0; i < points.size(); ++i)
+      pointRows(c, nb, w, lambda, mu, d, &intact, points[i], row, [&](std::int64_t r, RowBuffer& b) {
+        overwrite(s.A, r, b.unknown);
+        overwrite(s.B, r, b.prescribed);
+      });
+  });
+  errors.rethrow();
 }
 
 }  // namespace peristep

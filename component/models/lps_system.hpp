@@ -2,6 +2,7 @@
 // The discrete heterogeneous LPS system in (u, theta), 000:(3.1)-(3.2) with the sign of 000:(2.5).
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "core/csr_matrix.hpp"
@@ -41,5 +42,12 @@ struct LpsSystem {
 LpsSystem assembleLps(const PointCloud& cloud, const Neighbours& nb, const std::vector<double>& w,
                       const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& dofs,
                       const std::vector<std::uint8_t>* intact = nullptr);
+
+// Recomputes the rows of `points` (u and theta) of s = assembleLps(..., &intact) in place: the values the
+// full assembly would give, bit for bit, at a cost proportional to the points (the fracture driver
+// updates the rows around newly broken bonds instead of reassembling).
+void reassembleLpsRows(const PointCloud& cloud, const Neighbours& nb, const std::vector<double>& w,
+                       const std::vector<double>& lambda, const std::vector<double>& mu, const DofMap& dofs,
+                       const std::vector<std::uint8_t>& intact, std::span<const std::size_t> points, LpsSystem& s);
 
 }  // namespace peristep

@@ -17,7 +17,14 @@ double norm(const std::vector<double>& v) {
 
 GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b, std::span<double> x, double tol,
                   int maxIterations, int restart) {
-  const auto n = static_cast<std::size_t>(A.rows);
+  return gmres([&](std::span<const double> in, std::span<double> out) { A.multiply(in, out); },
+               [&](std::span<const double> in, std::span<double> out) { M.precondition(in, out); }, b, x, tol,
+               maxIterations, restart);
+}
+
+GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::span<const double> b,
+                  std::span<double> x, double tol, int maxIterations, int restart) {
+  const std::size_t n = b.size();
   const auto m = static_cast<std::size_t>(restart);
   GmresResult result;
   const double bnorm = std::sqrt([&] {
@@ -35,7 +42,7 @@ GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b
   std::vector<double> cs(m), sn(m), g(m + 1), w(n), r(n);
 
   while (result.iterations < maxIterations) {
-    A.multiply(x, r);
+    apply(x, r);
     for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
     const double beta = norm(r);
     result.relativeResidual = beta / bnorm;
@@ -49,8 +56,8 @@ GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b
     std::size_t j = 0;
     for (; j < m && result.iterations < maxIterations; ++j) {
       ++result.iterations;
-      M.precondition(V[j], Z[j]);  // right preconditioning: z_j = M^{-1} v_j
-      A.multiply(Z[j], w);
+      precondition(V[j], Z[j]);  // right preconditioning: z_j = M^{-1} v_j
+      apply(Z[j], w);
       for (std::size_t i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         double h = 0;
         for (std::size_t k = 0; k < n; ++k) h += w[k] * V[i][k];
@@ -87,7 +94,7 @@ GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b
     for (std::size_t i = 0; i < j; ++i)
       for (std::size_t k = 0; k < n; ++k) x[k] += y[i] * Z[i][k];
   }
-  A.multiply(x, r);
+  apply(x, r);
   for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
   result.relativeResidual = norm(r) / bnorm;
   result.converged = result.relativeResidual <= tol;

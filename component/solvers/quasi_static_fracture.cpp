@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iterator>
 
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
@@ -22,6 +24,10 @@ constexpr int kMaxSubIterations = 100000;
 // 1e-13 gives the same history (bench/README.md) for about 10% more iterations.
 constexpr double kKrylovTolerance = 1e-13;
 constexpr int kKrylovRestart = 40;
+// The crack zone: points whose bonds reach this fraction of their critical stretch, the closest first,
+// up to this many unknowns in the dense Schur complement (bench/README.md, "Issue 14").
+constexpr double kZoneRatio = 0.1;
+constexpr std::size_t kZoneUnknowns = 3000, kZoneShare = 10;  // at most a tenth of the unknowns
 
 // A numeric factorization priced in preconditioned GMRES iterations (one solve with the factors and one
 // product with A each). Measured with UMFPACK+METIS on glass-ceramic matrices of 16k and 62k unknowns
@@ -43,7 +49,6 @@ QuasiStaticFracture::QuasiStaticFracture(std::shared_ptr<const LpsDiscretization
       material_(std::move(material)),
       bonds_(std::move(bonds)),
       unitCollar_(std::move(unitCollarDisplacement)),
-      solver_(makeLinearSolver(solverName)),
       reuse_(reuse) {
   const std::size_t n = disc_->cloud.size();
   require(material_.lambda.size() == n && material_.mu.size() == n && material_.fractureEnergy.size() == n,
@@ -54,6 +59,11 @@ QuasiStaticFracture::QuasiStaticFracture(std::shared_ptr<const LpsDiscretization
   x_.assign(static_cast<std::size_t>(disc_->dofs.size), 0.0);
   factorizationCost_ = factorizationCostInIterations(disc_->dofs.size);
   assemble(nullptr);
+  if (reuse_ == FactorizationReuse::CrackZone) {
+    zone_ = std::make_unique<CrackZoneSolver>(disc_->neighbours, disc_->dofs);
+    return;
+  }
+  solver_ = makeLinearSolver(solverName);
   // The symbolic analysis belongs to the matrix of the construction state in every instance (UMFPACK's
   // strategy looks at the values), so that a state restored into another instance factors identically.
   solver_->analyze(system_.A);
@@ -65,18 +75,52 @@ LpsSystem QuasiStaticFracture::assembleFor(const std::vector<std::uint8_t>& inta
   const Neighbours& nb = disc_->neighbours;
   LpsSystem s = assembleLps(c, nb, disc_->weights, material_.lambda, material_.mu, disc_->dofs, &intact);
   stabilized.assign(c.size(), 0);
-  for (std::size_t p : c.domain) {
+  for (std::size_t p : c.domain)
     for (std::size_t k = nb.begin(p); k < nb.end(p); ++k)
       if (!intact[k]) stabilized[p] = 1;
-    if (!stabilized[p]) continue;
-    const double spring = springStiffness(material_.mu[p], c.delta);
+  addSprings(s, c.domain, stabilized);
+  return s;
+}
+
+void QuasiStaticFracture::addSprings(LpsSystem& s, std::span<const std::size_t> points,
+                                     const std::vector<std::uint8_t>& stabilized) const {
+  for (std::size_t p : points) {
+    if (!stabilized[p] || disc_->dofs.u[p] < 0) continue;
+    const double spring = springStiffness(material_.mu[p], disc_->cloud.delta);
     for (int a = 0; a < 2; ++a) {
       const std::int64_t row = disc_->dofs.u[p] + a;
       for (std::int64_t k = s.A.rowStart[row]; k < s.A.rowStart[row + 1]; ++k)
         if (s.A.col[k] == row) s.A.value[k] += spring;
     }
   }
-  return s;
+}
+
+void QuasiStaticFracture::reassembleAround(const std::vector<std::size_t>& fresh, LoadStepReport& report) {
+  // Breaking p-q changes the rows of p and q (their bonds, the frames of 000:(3.20)-(3.22), the springs)
+  // and of the points within delta of both (the free-surface test looks two bonds deep): all in
+  // {p} + N(p) + {q}.
+  Stopwatch clock;
+  const Neighbours& nb = disc_->neighbours;
+  std::vector<std::uint8_t> mark(disc_->cloud.size(), 0);
+  for (std::size_t k : fresh) {
+    const std::size_t p = nb.owner(k);
+    mark[p] = mark[nb.index[k]] = 1;
+    for (std::size_t j = nb.begin(p); j < nb.end(p); ++j) mark[nb.index[j]] = 1;
+  }
+  std::vector<std::size_t> points;
+  for (std::size_t p = 0; p < mark.size(); ++p)
+    if (mark[p]) points.push_back(p);
+  for (std::size_t p : points)
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k)
+      if (!bonds_.intact[k] && disc_->cloud.inDomain(p)) stabilized_[p] = 1;
+  reassembleLpsRows(disc_->cloud, nb, disc_->weights, material_.lambda, material_.mu, disc_->dofs, bonds_.intact,
+                    points, system_);
+  addSprings(system_, points, stabilized_);
+  std::vector<std::size_t> merged;
+  std::set_union(dirty_.begin(), dirty_.end(), points.begin(), points.end(), std::back_inserter(merged));
+  dirty_ = std::move(merged);
+  matrixFactored_ = false;
+  report.assemblySeconds += clock.seconds();
 }
 
 void QuasiStaticFracture::assemble(LoadStepReport* report) {
@@ -101,12 +145,8 @@ void QuasiStaticFracture::rebuildFactorization(LoadStepReport& report) {
   // After a restore: factorize the matrix of the recorded state again (the current bonds with those
   // broken since then still intact); the policy counters were restored with the state.
   Stopwatch clock;
-  std::vector<std::uint8_t> intact = bonds_.intact, unused;
-  for (std::size_t i = factoredBroken_; i < brokenByLoading_.size(); ++i) {
-    const std::size_t k = brokenByLoading_[i];
-    intact[k] = intact[bonds_.reverse[k]] = 1;
-  }
-  factoredA_ = factoredBroken_ == brokenByLoading_.size() ? system_.A : assembleFor(intact, unused).A;
+  std::vector<std::uint8_t> unused;
+  factoredA_ = factoredBroken_ == brokenByLoading_.size() ? system_.A : assembleFor(intactAt(factoredBroken_), unused).A;
   solver_->factorize(factoredA_);
   factorizationLive_ = true;
   ++report.factorizations;
@@ -126,6 +166,25 @@ void QuasiStaticFracture::solveCurrent(LoadStepReport& report) {
         rhs[static_cast<std::size_t>(d.u[p] + a)] +=
             springStiffness(material_.mu[p], c.delta) * u_[2 * p + static_cast<std::size_t>(a)];
 
+  if (reuse_ == FactorizationReuse::CrackZone) {
+    solveInZone(rhs, report);
+  } else {
+    solveWithFactorization(rhs, report);
+  }
+  for (double v : x_)
+    if (!std::isfinite(v)) throw SolverFailure("fracture solve produced a non-finite displacement");
+  for (std::size_t p = 0; p < c.size(); ++p) {
+    if (d.u[p] >= 0) {
+      u_[2 * p] = x_[static_cast<std::size_t>(d.u[p])];
+      u_[2 * p + 1] = x_[static_cast<std::size_t>(d.u[p]) + 1];
+    } else {
+      u_[2 * p] = c.isVoid(p) ? 0.0 : g[2 * p];
+      u_[2 * p + 1] = c.isVoid(p) ? 0.0 : g[2 * p + 1];
+    }
+  }
+}
+
+void QuasiStaticFracture::solveWithFactorization(const std::vector<double>& rhs, LoadStepReport& report) {
   const bool reuseStale = reuse_ == FactorizationReuse::StaleAsPreconditioner;
   if (hasFactorization_ && !factorizationLive_ && (matrixFactored_ || reuseStale)) rebuildFactorization(report);
   Stopwatch clock;
@@ -153,17 +212,79 @@ void QuasiStaticFracture::solveCurrent(LoadStepReport& report) {
     solver_->solve(rhs, x_);
     report.solveSeconds += clock.lap();
   }
-  for (double v : x_)
-    if (!std::isfinite(v)) throw SolverFailure("fracture solve produced a non-finite displacement");
-  for (std::size_t p = 0; p < c.size(); ++p) {
-    if (d.u[p] >= 0) {
-      u_[2 * p] = x_[static_cast<std::size_t>(d.u[p])];
-      u_[2 * p + 1] = x_[static_cast<std::size_t>(d.u[p]) + 1];
-    } else {
-      u_[2 * p] = c.isVoid(p) ? 0.0 : g[2 * p];
-      u_[2 * p + 1] = c.isVoid(p) ? 0.0 : g[2 * p + 1];
+}
+
+std::vector<std::uint8_t> QuasiStaticFracture::intactAt(std::size_t broken) const {
+  std::vector<std::uint8_t> intact = bonds_.intact;
+  for (std::size_t i = broken; i < brokenByLoading_.size(); ++i) {
+    const std::size_t k = brokenByLoading_[i];
+    intact[k] = intact[bonds_.reverse[k]] = 1;
+  }
+  return intact;
+}
+
+void QuasiStaticFracture::factorizeZone(LoadStepReport& report) {
+  // The zone holds the points closest to breaking under the last solution: the ratio stretch / s0
+  // ranks them, the size of the dense Schur complement bounds them.
+  Stopwatch clock;
+  const std::vector<double> ratio = stretchRatios(bonds_, disc_->cloud, disc_->neighbours, u_);
+  factoredA_ = system_.A;
+  static const std::size_t cap = std::getenv("ZONE") ? std::stoul(std::getenv("ZONE")) : kZoneUnknowns;
+  const std::size_t budget = std::min(cap, static_cast<std::size_t>(disc_->dofs.size) / kZoneShare);
+  zone_->factorize(factoredA_, zone_->planCore(ratio, kZoneRatio, budget));
+  factoredBroken_ = denseBase_ = brokenByLoading_.size();
+  hasFactorization_ = factorizationLive_ = matrixFactored_ = true;
+  outsideZone_ = false;
+  staleIterations_ = lastKrylovIterations_ = 0;
+  dirty_.clear();
+  ++report.factorizations;
+  report.factorizationSeconds += clock.seconds();
+}
+
+void QuasiStaticFracture::rebuildZone(LoadStepReport& report) {
+  // After a restore: the sparse factorization of the recorded matrix and zone, then the dense solver's
+  // LU and correction rows as the run had them; every row is then checked against the zone as usual.
+  Stopwatch clock;
+  std::vector<std::uint8_t> stabilized;
+  factoredA_ = assembleFor(intactAt(factoredBroken_), stabilized).A;
+  zone_->factorize(factoredA_, restoredCore_);
+  const CsrMatrix base =
+      denseBase_ == factoredBroken_ ? factoredA_ : assembleFor(intactAt(denseBase_), stabilized).A;
+  zone_->restoreDense(base, restoredCorrectionOrder_, restoredCorrectionBlocks_, system_.A);
+  factorizationLive_ = true;
+  dirty_.resize(disc_->cloud.size());
+  for (std::size_t p = 0; p < dirty_.size(); ++p) dirty_[p] = p;
+  ++report.factorizations;
+  report.factorizationSeconds += clock.seconds();
+}
+
+void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepReport& report) {
+  if (hasFactorization_ && !factorizationLive_) rebuildZone(report);
+  if (!hasFactorization_) factorizeZone(report);
+  Stopwatch clock;
+  const int dense = zone_->denseFactorizations();
+  outsideZone_ = zone_->update(system_.A, dirty_) > 0 || outsideZone_;
+  dirty_.clear();
+  bool solved = !outsideZone_;
+  if (outsideZone_) {
+    // Rows outside the core changed (the crack left the zone, or bonds broke elsewhere): GMRES with the
+    // zone solver while that is cheaper than a new zone (the ski rental of solveWithFactorization).
+    const int budget = factorizationCost_ - staleIterations_;
+    if (budget > 0 && lastKrylovIterations_ <= budget) {
+      const GmresResult r = zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, budget, kKrylovRestart);
+      report.krylovIterations += r.iterations;
+      staleIterations_ += r.iterations;
+      lastKrylovIterations_ = r.iterations;
+      solved = r.converged;
     }
   }
+  report.solveSeconds += clock.lap();
+  if (!solved) factorizeZone(report);
+  clock.lap();
+  if (!outsideZone_) zone_->solve(system_.A, rhs, x_, kKrylovTolerance);
+  if (zone_->denseFactorizations() != dense) denseBase_ = brokenByLoading_.size();
+  report.denseFactorizations += zone_->denseFactorizations() - dense;
+  report.solveSeconds += clock.lap();
 }
 
 LoadStepReport QuasiStaticFracture::advance(double load) {
@@ -179,7 +300,11 @@ LoadStepReport QuasiStaticFracture::advance(double load) {
     if (fresh.empty()) break;
     brokenByLoading_.insert(brokenByLoading_.end(), fresh.begin(), fresh.end());
     report.newlyBroken += fresh.size();
-    assemble(&report);
+    // The reference assembles afresh, so that it checks the row updates of the other drivers.
+    if (reuse_ == FactorizationReuse::RefactorizeEveryChange)
+      assemble(&report);
+    else
+      reassembleAround(fresh, report);
     if (subIterationHook_) subIterationHook_(report);
     if (report.subIterations >= kMaxSubIterations)
       throw SolverFailure("no equilibrium after " + std::to_string(kMaxSubIterations) + " sub-iterations");
@@ -222,6 +347,10 @@ std::vector<std::uint8_t> QuasiStaticFracture::saveState() const {
   w.put<std::uint64_t>(factoredBroken_);
   w.put<std::int32_t>(staleIterations_);
   w.put<std::int32_t>(lastKrylovIterations_);
+  w.put<std::uint64_t>(denseBase_);
+  w.putArray(zone_ && hasFactorization_ ? zone_->corePoints() : std::vector<std::size_t>{});
+  w.putArray(zone_ && hasFactorization_ ? zone_->correctionOrder() : std::vector<std::size_t>{});
+  w.putArray(zone_ && hasFactorization_ ? zone_->correctionBlocks() : std::vector<std::size_t>{});
   return w.take();
 }
 
@@ -236,8 +365,15 @@ void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   const auto factoredBroken = r.get<std::uint64_t>();
   const auto stale = r.get<std::int32_t>();
   const auto lastKrylov = r.get<std::int32_t>();
+  const auto denseBase = r.get<std::uint64_t>();
+  auto core = r.getArray<std::size_t>();
+  auto correctionOrder = r.getArray<std::size_t>();
+  auto correctionBlocks = r.getArray<std::size_t>();
   r.expectEnd();
-  if (factoredBroken > broken.size()) throw InvalidInput("serialized FMU state is corrupt: factorization index");
+  if (factoredBroken > broken.size() || denseBase > broken.size())
+    throw InvalidInput("serialized FMU state is corrupt: factorization index");
+  for (std::size_t p : core)
+    if (p >= disc_->cloud.size()) throw InvalidInput("serialized FMU state is corrupt: crack zone");
   for (std::size_t k : broken)
     if (k >= intact.size()) throw InvalidInput("serialized FMU state is corrupt: broken-bond index");
   load_ = load;
@@ -249,6 +385,12 @@ void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   factoredBroken_ = static_cast<std::size_t>(factoredBroken);
   staleIterations_ = stale;
   lastKrylovIterations_ = lastKrylov;
+  denseBase_ = static_cast<std::size_t>(denseBase);
+  restoredCore_ = std::move(core);
+  restoredCorrectionOrder_ = std::move(correctionOrder);
+  restoredCorrectionBlocks_ = std::move(correctionBlocks);
+  dirty_.clear();
+  outsideZone_ = false;  // rebuildZone finds it again
   factorizationLive_ = false;
   assemble(nullptr);
   matrixFactored_ = hasFactorization_ && factoredBroken_ == brokenByLoading_.size();

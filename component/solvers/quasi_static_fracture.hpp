@@ -10,6 +10,7 @@
 
 #include "fracture/bond_state.hpp"
 #include "models/lps_discretization.hpp"
+#include "solvers/crack_zone_solver.hpp"
 #include "solvers/linear_solver.hpp"
 
 namespace peristep {
@@ -22,6 +23,7 @@ struct LoadStepReport {
   int subIterations = 0;       // solves at this load
   int factorizations = 0;      // numeric factorizations among them
   int krylovIterations = 0;    // GMRES iterations preconditioned by an older factorization
+  int denseFactorizations = 0; // dense LU factorizations of the crack zone's Schur complement
   std::size_t newlyBroken = 0; // pairs broken at this load
   // Wall time of the phases (profiling only: no decision depends on them, so runs stay reproducible).
   double assemblySeconds = 0, factorizationSeconds = 0, solveSeconds = 0, bondCheckSeconds = 0;
@@ -30,6 +32,7 @@ struct LoadStepReport {
     subIterations += o.subIterations;
     factorizations += o.factorizations;
     krylovIterations += o.krylovIterations;
+    denseFactorizations += o.denseFactorizations;
     newlyBroken += o.newlyBroken;
     assemblySeconds += o.assemblySeconds;
     factorizationSeconds += o.factorizationSeconds;
@@ -41,7 +44,11 @@ struct LoadStepReport {
 
 // How the solves after a break use the factorization of an older matrix.
 enum class FactorizationReuse {
-  // GMRES preconditioned by the older factorization while that is cheaper than a new one (production).
+  // One sparse factorization per crack zone (solvers/crack_zone_solver.hpp): the zone around the bonds
+  // closest to breaking is condensed to a dense Schur complement that takes up the rows that breaking
+  // changes, so that a new sparse factorization is needed only when the crack leaves the zone (production).
+  CrackZone,
+  // GMRES preconditioned by the older factorization while that is cheaper than a new one.
   StaleAsPreconditioner,
   // A new factorization at every change of the matrix and a direct solve, no GMRES: the reference whose
   // crack history the production driver must repeat exactly (tests/fracture_driver_test.cpp).
@@ -54,7 +61,7 @@ class QuasiStaticFracture {
   // (the problem has no body force).
   QuasiStaticFracture(std::shared_ptr<const LpsDiscretization> disc, FractureMaterial material, BondState bonds,
                       std::vector<double> unitCollarDisplacement, const std::string& solverName = "umfpack",
-                      FactorizationReuse reuse = FactorizationReuse::StaleAsPreconditioner);
+                      FactorizationReuse reuse = FactorizationReuse::CrackZone);
 
   LoadStepReport advance(double load);
   // Called after every sub-iteration that broke bonds, with the state consistent (saveState() then
@@ -83,6 +90,14 @@ class QuasiStaticFracture {
  private:
   LpsSystem assembleFor(const std::vector<std::uint8_t>& intact, std::vector<std::uint8_t>& stabilized) const;
   void assemble(LoadStepReport* report);
+  // Recomputes in place the rows that breaking `fresh` changed (and marks them for the crack zone).
+  void reassembleAround(const std::vector<std::size_t>& fresh, LoadStepReport& report);
+  void addSprings(LpsSystem& s, std::span<const std::size_t> points, const std::vector<std::uint8_t>& stabilized) const;
+  void factorizeZone(LoadStepReport& report);
+  void rebuildZone(LoadStepReport& report);
+  void solveInZone(const std::vector<double>& rhs, LoadStepReport& report);
+  void solveWithFactorization(const std::vector<double>& rhs, LoadStepReport& report);
+  std::vector<std::uint8_t> intactAt(std::size_t broken) const;
   void factorizeCurrent(LoadStepReport& report);
   void rebuildFactorization(LoadStepReport& report);
   void solveCurrent(LoadStepReport& report);
@@ -105,6 +120,12 @@ class QuasiStaticFracture {
   int staleIterations_ = 0;        // GMRES iterations spent on the factorization since it was computed
   int lastKrylovIterations_ = 0;
   int factorizationCost_ = 0;      // one factorization priced in GMRES iterations (see the .cpp)
+  std::unique_ptr<CrackZoneSolver> zone_;  // CrackZone only
+  std::vector<std::size_t> dirty_;          // points whose rows were recomputed since the last solve
+  bool outsideZone_ = false;                // rows outside the zone's core changed since it was factorized
+  std::size_t denseBase_ = 0;               // brokenByLoading_ size when the zone's dense LU was computed
+  // From restoreState, until the zone is rebuilt.
+  std::vector<std::size_t> restoredCore_, restoredCorrectionOrder_, restoredCorrectionBlocks_;
   std::vector<double> u_, x_;      // u of all points; last unknown vector (warm start)
   std::vector<std::size_t> brokenByLoading_;
   double load_ = 0;

@@ -1,0 +1,84 @@
+#pragma once
+// Solves the fracture system A x = b while bonds break, with one sparse factorization per crack zone.
+// The zone is a set of core points whose rows may change (bonds may break there) and the points within
+// delta of them (the columns of those rows). Its unknowns Z are eliminated last: the sparse factors of the
+// rest and the dense Schur complement S come from one MUMPS factorization; a change of the core's rows
+// changes only the Z x Z block, so the solve uses S + (A - A_factored)_ZZ (DenseRowUpdateSolver) and the same
+// sparse factors. A change outside the core needs a new zone and factorization.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/csr_matrix.hpp"
+#include "geometry/neighbours.hpp"
+#include "models/lps_system.hpp"
+#include "solvers/dense_row_update_solver.hpp"
+#include "solvers/gmres.hpp"
+#include "solvers/schur_factorization.hpp"
+
+namespace peristep {
+
+class CrackZoneSolver {
+ public:
+  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs) : nb_(nb), dofs_(dofs) {}
+
+  // Factorizes A (kept alive by the caller) with the zone of `corePoints` (ascending) eliminated last.
+  void factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints);
+  // A core for the next factorization: the points with priority >= threshold, highest first, each with
+  // its neighbours (the rows a break of its bonds changes), while the zone has at most `budget` unknowns.
+  std::vector<std::size_t> planCore(const std::vector<double>& priority, double threshold, std::size_t budget) const;
+
+  // The rows of `points` (ascending) in A may differ from the factorized matrix: hand the changes of the
+  // core's rows to the dense zone solver; returns how many changed rows lie outside the core (those the
+  // solver cannot take up: solveIterative() handles them).
+  std::size_t update(const CsrMatrix& A, std::span<const std::size_t> points);
+
+  // x = A^-1 b for the current A (the factorized one plus the updates), refined against A until the
+  // componentwise backward error max_i |b - A x|_i / (|A| |x| + |b|)_i is at most tol; returns the number
+  // of refinement steps.
+  int solve(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol);
+
+  // Checkpoints: the dense solver's state is a function of the matrix its LU was last computed with (base)
+  // and of the order in which rows entered its correction since; restoring replays both.
+  const std::vector<std::size_t>& correctionOrder() const { return dense_.correctedRowOrder(); }
+  const std::vector<std::size_t>& correctionBlocks() const { return dense_.correctionBlocks(); }
+  void restoreDense(const CsrMatrix& base, std::span<const std::size_t> correctionOrder,
+                    std::span<const std::size_t> correctionBlocks, const CsrMatrix& A);
+
+  // A x = b when rows outside the core changed too: GMRES on the scaled system D A D, preconditioned by
+  // the zone solver (exact up to those rows), from x; stops at relative residual tol.
+  GmresResult solveIterative(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol,
+                             int maxIterations, int restart);
+
+  const std::vector<std::size_t>& corePoints() const { return core_; }
+  std::size_t zoneSize() const { return zone_.size(); }
+  int denseFactorizations() const { return dense_.factorizations(); }
+
+ private:
+  void solveOnce(std::span<const double> b, std::span<double> x);
+  void solveScaled(std::span<const double> b, std::span<double> y);
+  std::vector<std::int64_t> zoneUnknowns(const std::vector<std::size_t>& corePoints) const;
+  // The change (A - factored) of zone row `row` on its columns; false when the row is unchanged.
+  bool rowChange(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
+                 std::vector<double>& change) const;
+  // Rows of point p that are unknowns.
+  template <class F>
+  void forRows(std::size_t p, F&& f) const;
+
+  const Neighbours& nb_;
+  const DofMap& dofs_;
+  const CsrMatrix* factored_ = nullptr;
+  // Symmetric diagonal scaling D = |diag A|^-1/2 of the factorized matrix: the u rows are ~1e20 times the
+  // theta rows, and MUMPS factorizes D A D (its own scaling is off when a Schur complement is asked for).
+  std::vector<double> scale_;
+  CsrMatrix scaled_;
+  SchurFactorization sparse_;
+  DenseRowUpdateSolver dense_;
+  std::vector<std::size_t> core_;
+  std::vector<std::uint8_t> inCore_;
+  std::vector<std::int64_t> zone_;       // zone unknowns, ascending
+  std::vector<std::int32_t> zoneIndex_;  // per unknown: position in zone_, -1 outside
+  std::vector<double> reduced_, xZone_;
+};
+
+}  // namespace peristep

@@ -1,0 +1,165 @@
+// The pieces of the crack-zone fracture solver against plain dense or sparse solves: MUMPS' Schur
+// complement with condensation and expansion, the Woodbury row updates of the dense zone solver, and the
+// in-place row reassembly of the LPS system.
+#include <catch2/catch.hpp>
+
+#include <Eigen/Dense>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "fracture/bond_state.hpp"
+#include "models/lps_discretization.hpp"
+#include "models/lps_system.hpp"
+#include "solvers/dense_row_update_solver.hpp"
+#include "solvers/schur_factorization.hpp"
+
+using namespace peristep;
+
+namespace {
+
+// A nonsymmetric sparse matrix: a 2D five-point stencil on an m x m grid with a skew convection term.
+CsrMatrix convectionDiffusion(int m) {
+  CsrMatrix A;
+  A.rows = A.cols = m * m;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      const int r = i * m + j;
+      const auto add = [&](int c, double v) {
+        A.col.push_back(c);
+        A.value.push_back(v);
+      };
+      if (i > 0) add(r - m, -1.0 - 0.3);
+      if (j > 0) add(r - 1, -1.0 + 0.2);
+      add(r, 4.5);
+      if (j < m - 1) add(r + 1, -1.0 - 0.2);
+      if (i < m - 1) add(r + m, -1.0 + 0.3);
+      A.rowStart.push_back(static_cast<std::int64_t>(A.col.size()));
+    }
+  return A;
+}
+
+Eigen::MatrixXd dense(const CsrMatrix& A) {
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(A.rows, A.cols);
+  for (std::int64_t r = 0; r < A.rows; ++r)
+    for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k) D(r, A.col[k]) = A.value[k];
+  return D;
+}
+
+}  // namespace
+
+TEST_CASE("MUMPS with a Schur set: S, condensation and expansion give A's solution", "[solver][crack-zone]") {
+  const CsrMatrix A = convectionDiffusion(12);
+  const std::vector<std::int64_t> zone{30, 31, 32, 42, 43, 44, 77, 100};  // any set, not contiguous
+  SchurFactorization f;
+  f.factorize(A, zone);
+  const Eigen::MatrixXd D = dense(A);
+  const auto z = static_cast<Eigen::Index>(zone.size());
+  std::vector<int> rest;
+  for (int i = 0; i < A.rows; ++i)
+    if (std::find(zone.begin(), zone.end(), i) == zone.end()) rest.push_back(i);
+  const Eigen::MatrixXd expected = D(zone, zone) - D(zone, rest) * D(rest, rest).lu().solve(D(rest, zone));
+  const Eigen::Map<const Eigen::MatrixXd> S(f.schurComplement().data(), z, z);  // column-major
+  CHECK((S - expected).norm() <= 1e-12 * expected.norm());
+
+  std::vector<double> b(static_cast<std::size_t>(A.rows));
+  for (std::size_t i = 0; i < b.size(); ++i) b[i] = std::sin(0.7 * static_cast<double>(i));
+  std::vector<double> reduced(zone.size()), xz(zone.size()), x(b.size());
+  f.condense(b, reduced);
+  Eigen::Map<Eigen::VectorXd>(xz.data(), z) = S.lu().solve(Eigen::Map<const Eigen::VectorXd>(reduced.data(), z));
+  f.expand(xz, x);
+  const Eigen::VectorXd exact = D.lu().solve(Eigen::Map<const Eigen::VectorXd>(b.data(), A.rows));
+  CHECK((Eigen::Map<const Eigen::VectorXd>(x.data(), A.rows) - exact).norm() <= 1e-12 * exact.norm());
+
+  SECTION("an empty Schur set is a plain solve") {
+    f.factorize(A, {});
+    f.solve(b, x);
+    CHECK((Eigen::Map<const Eigen::VectorXd>(x.data(), A.rows) - exact).norm() <= 1e-12 * exact.norm());
+  }
+}
+
+TEST_CASE("row updates through Woodbury solve with the changed matrix, also past a fresh LU",
+          "[solver][crack-zone]") {
+  const int n = 120;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::MatrixXd M(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) M(i, j) = u(rng) + (i == j ? 30.0 : 0.0);
+  DenseRowUpdateSolver solver;
+  solver.reset(std::vector<double>(M.data(), M.data() + n * n));
+  std::vector<double> changes(static_cast<std::size_t>(n) * n, 0.0);  // the current change of every row
+  Eigen::VectorXd r(n), x(n);
+  for (int round = 0; round < 40; ++round) {
+    // Change three rows (some again) on a fixed pattern of columns per row.
+    for (int c = 0; c < 3; ++c) {
+      const int row = (round * 7 + c * 13) % n;
+      std::vector<std::int32_t> cols;
+      std::vector<double> delta;
+      for (int k = 0; k < n; k += 9) {
+        cols.push_back((row + k) % n);
+        delta.push_back(2.0 * u(rng));
+      }
+      std::vector<std::int32_t> sorted = cols;
+      std::sort(sorted.begin(), sorted.end());
+      std::vector<double> values(cols.size());
+      for (std::size_t k = 0; k < cols.size(); ++k)
+        values[static_cast<std::size_t>(std::find(sorted.begin(), sorted.end(), cols[k]) - sorted.begin())] = delta[k];
+      for (int j = 0; j < n; ++j) changes[static_cast<std::size_t>(row) * n + j] = 0.0;
+      for (std::size_t k = 0; k < sorted.size(); ++k) changes[static_cast<std::size_t>(row) * n + sorted[k]] = values[k];
+      solver.setRow(static_cast<std::size_t>(row), sorted, values);
+    }
+    Eigen::MatrixXd current = M;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) current(i, j) += changes[static_cast<std::size_t>(i) * n + j];
+    for (int i = 0; i < n; ++i) r(i) = std::cos(0.3 * i + round);
+    solver.solve(std::span<const double>(r.data(), n), std::span<double>(x.data(), n));
+    const Eigen::VectorXd exact = current.lu().solve(r);
+    INFO("round " << round << ", rows in the correction " << solver.correctedRows());
+    REQUIRE((x - exact).norm() <= 1e-12 * exact.norm());
+  }
+  CHECK(solver.factorizations() > 1);  // the correction grew past its limit and a fresh LU took over
+}
+
+TEST_CASE("reassembling the rows around broken bonds gives the full assembly bit for bit",
+          "[lps][crack-zone]") {
+  GridSpec grid;
+  grid.nx = 21;
+  grid.ny = 17;
+  grid.Lx = 2e-3;
+  grid.Ly = 1.6e-3;
+  grid.deltaOverH = 3.0;
+  const auto disc = std::make_shared<const LpsDiscretization>(LpsDiscretization::build(grid));
+  const PointCloud& c = disc->cloud;
+  const Neighbours& nb = disc->neighbours;
+  std::vector<double> lambda(c.size()), mu(c.size());
+  for (std::size_t p = 0; p < c.size(); ++p) {
+    lambda[p] = 50e9 * (1.0 + 0.5 * std::sin(1e4 * c.x[p]));
+    mu[p] = 30e9 * (1.0 + 0.3 * std::cos(1e4 * c.y[p]));
+  }
+  std::vector<std::uint8_t> intact = makeBondState(c, nb, lambda, mu, std::vector<double>(c.size(), 1.0)).intact;
+  LpsSystem s = assembleLps(c, nb, disc->weights, lambda, mu, disc->dofs, &intact);
+  // Cut the bonds crossing a short inclined line, a few at a time, as the driver does.
+  BondState cut = makeBondState(c, nb, lambda, mu, std::vector<double>(c.size(), 1.0));
+  breakCrossing(cut, c, nb, Segment{-0.5e-3, -0.2e-3, 0.3e-3, 0.25e-3});
+  std::vector<std::size_t> broken;
+  for (std::size_t k = 0; k < nb.bonds(); ++k)
+    if (!cut.intact[k] && nb.index[k] > nb.owner(k) && intact[k]) broken.push_back(k);
+  REQUIRE(broken.size() > 20);
+  for (std::size_t first = 0; first < broken.size(); first += 7) {
+    std::vector<std::uint8_t> mark(c.size(), 0);
+    for (std::size_t i = first; i < std::min(broken.size(), first + 7); ++i) {
+      const std::size_t k = broken[i], p = nb.owner(k);
+      intact[k] = intact[cut.reverse[k]] = 0;
+      mark[p] = mark[nb.index[k]] = 1;
+      for (std::size_t j = nb.begin(p); j < nb.end(p); ++j) mark[nb.index[j]] = 1;
+    }
+    std::vector<std::size_t> points;
+    for (std::size_t p = 0; p < c.size(); ++p)
+      if (mark[p]) points.push_back(p);
+    reassembleLpsRows(c, nb, disc->weights, lambda, mu, disc->dofs, intact, points, s);
+    const LpsSystem full = assembleLps(c, nb, disc->weights, lambda, mu, disc->dofs, &intact);
+    REQUIRE(s.A.value == full.A.value);
+    REQUIRE(s.B.value == full.B.value);
+  }
+}
