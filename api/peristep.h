@@ -75,7 +75,16 @@ enum PeriStepValueReference {
   /* bounds on the work one call may start (refused up front with the estimate) */
   PERISTEP_VR_MEMORY_BUDGET = 63,     /* UInt64, bytes: estimated set-up memory; 0: 3/4 of usable memory */
   PERISTEP_VR_SET_UP_TIME_LIMIT = 64, /* Float64, s: estimated set-up time; 0: no limit */
-  PERISTEP_VR_MAX_INTERNAL_STEPS = 65 /* UInt64: internal time steps per fmi3DoStep; 0: no limit */
+  PERISTEP_VR_MAX_INTERNAL_STEPS = 65, /* UInt64: internal time steps per fmi3DoStep; 0: no limit */
+
+  /* material constants of the built-in scenes (start values: the papers'); nu is poissonRatio */
+  PERISTEP_VR_GLASS_YOUNGS_MODULUS = 70,     /* Float64, Pa: glass-ceramic, glass phase E1 (000 Table 1) */
+  PERISTEP_VR_CRYSTAL_YOUNGS_MODULUS = 71,   /* Float64, Pa: glass-ceramic, crystal phase E2 */
+  PERISTEP_VR_GLASS_FRACTURE_ENERGY = 72,    /* Float64, J/m^2: glass-ceramic, glass phase G1 */
+  PERISTEP_VR_CRYSTAL_FRACTURE_ENERGY = 73,  /* Float64, J/m^2: glass-ceramic, crystal phase G2 */
+  PERISTEP_VR_BULK_MODULUS = 74,             /* Float64, Pa: dynamic scenes, K (001 Table 1) */
+  PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE = 75, /* Float64, J/m^2: dynamic scenes, G_c */
+  PERISTEP_VR_DENSITY = 76                   /* Float64, kg/m^3: dynamic scenes, rho */
 };
 
 /* Values of the enumeration PeriStep.Scene (variable "scene") */

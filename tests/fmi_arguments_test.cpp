@@ -72,6 +72,14 @@ TEST_CASE("non-physical and non-finite values are refused when they are set", "[
     requireRefused(s, "fmi3SetFloat64", "Ly (vr 12) must be finite, got inf",
                    [&] { return s.setFloat64(PERISTEP_VR_LY, {inf}); });
   }
+  SECTION("a negative modulus") {
+    requireRefused(s, "fmi3SetFloat64", "bulkModulus (vr 74) must lie in (0, inf), got -2.5e+10",
+                   [&] { return s.setFloat64(PERISTEP_VR_BULK_MODULUS, {-25e9}); });
+  }
+  SECTION("a zero fracture energy") {
+    requireRefused(s, "fmi3SetFloat64", "glassFractureEnergy (vr 72) must lie in (0, inf), got 0",
+                   [&] { return s.setFloat64(PERISTEP_VR_GLASS_FRACTURE_ENERGY, {0.0}); });
+  }
   SECTION("modulusContrast 0") {
     requireRefused(s, "fmi3SetFloat64", "modulusContrast (vr 15) must lie in (0, inf)",
                    [&] { return s.setFloat64(PERISTEP_VR_MODULUS_CONTRAST, {0.0}); });

@@ -141,6 +141,13 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.timeIntegrator = integratorName(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
   p.internalTimeStep = v.scalar<double>(PERISTEP_VR_INTERNAL_TIME_STEP);
   p.integratorTolerance = v.scalar<double>(PERISTEP_VR_INTEGRATOR_TOLERANCE);
+  p.glassYoungsModulus = v.scalar<double>(PERISTEP_VR_GLASS_YOUNGS_MODULUS);
+  p.crystalYoungsModulus = v.scalar<double>(PERISTEP_VR_CRYSTAL_YOUNGS_MODULUS);
+  p.glassFractureEnergy = v.scalar<double>(PERISTEP_VR_GLASS_FRACTURE_ENERGY);
+  p.crystalFractureEnergy = v.scalar<double>(PERISTEP_VR_CRYSTAL_FRACTURE_ENERGY);
+  p.bulkModulus = v.scalar<double>(PERISTEP_VR_BULK_MODULUS);
+  p.criticalEnergyReleaseRate = v.scalar<double>(PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE);
+  p.density = v.scalar<double>(PERISTEP_VR_DENSITY);
   // memoryBudget 0: 3/4 of what the process can use, leaving room for the importer and other instances.
   const auto budget = v.scalar<std::uint64_t>(PERISTEP_VR_MEMORY_BUDGET);
   p.limits.memoryBytes = budget > 0 ? static_cast<double>(budget) : 0.75 * static_cast<double>(usableMemoryBytes());

@@ -247,6 +247,37 @@ std::vector<Variable> makeTable() {
        .description = "Dynamic scenes: most internal time steps one fmi3DoStep may take; central difference "
                       "refuses a longer step up front, the SUNDIALS integrators stop there. 0: no limit",
        .start = "1000000", .min = Bound{0}},
+
+      // The papers' material constants; a scene reads only its own.
+      {.name = "glassYoungsModulus", .vr = PERISTEP_VR_GLASS_YOUNGS_MODULUS, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Glass-ceramic scene: Young's modulus E1 of the glass phase (000 Table 1), > 0", .unit = "Pa",
+       .start = "80e9", .min = Bound{0, true}},
+      {.name = "crystalYoungsModulus", .vr = PERISTEP_VR_CRYSTAL_YOUNGS_MODULUS, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Glass-ceramic scene: Young's modulus E2 of the crystal phase (000 Table 1), > 0", .unit = "Pa",
+       .start = "133e9", .min = Bound{0, true}},
+      {.name = "glassFractureEnergy", .vr = PERISTEP_VR_GLASS_FRACTURE_ENERGY, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Glass-ceramic scene: fracture energy G1 of the glass phase (000 Table 1), > 0",
+       .unit = "J/m2", .start = "6.59", .min = Bound{0, true}},
+      {.name = "crystalFractureEnergy", .vr = PERISTEP_VR_CRYSTAL_FRACTURE_ENERGY, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Glass-ceramic scene: fracture energy G2 of the crystal phase (000 Table 1), > 0",
+       .unit = "J/m2", .start = "86.35", .min = Bound{0, true}},
+      {.name = "bulkModulus", .vr = PERISTEP_VR_BULK_MODULUS, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Dynamic scenes: bulk modulus K (001 Table 1), > 0; with poissonRatio it gives the Lame "
+                      "constants and E = 3 K (1 - 2 nu)",
+       .unit = "Pa", .start = "25e9", .min = Bound{0, true}},
+      {.name = "criticalEnergyReleaseRate", .vr = PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Dynamic scenes: critical energy release rate G_c (001 Table 1), > 0", .unit = "J/m2",
+       .start = "500", .min = Bound{0, true}},
+      {.name = "density", .vr = PERISTEP_VR_DENSITY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Dynamic scenes: mass density rho (001 Sec. 6), > 0", .unit = "kg/m3", .start = "1200",
+       .min = Bound{0, true}},
   };
 }
 
@@ -323,12 +354,13 @@ const EnumerationType* findEnumeration(std::string_view name) {
 }
 
 const std::vector<UnitDefinition>& unitDefinitions() {
-  // N/m = kg s^-2 and J/m = kg m s^-2 (per unit thickness of the plane-strain body); K_IC's Pa m^(1/2) =
-  // kg m^(-1/2) s^-2 has no integer powers.
+  // N/m = kg s^-2 and J/m = kg m s^-2 (per unit thickness of the plane-strain body), J/m2 = kg s^-2 (energy
+  // per crack area); K_IC's Pa m^(1/2) = kg m^(-1/2) s^-2 has no integer powers.
   static const std::vector<UnitDefinition> units{
       {.name = "s", .s = 1}, {.name = "m", .m = 1}, {.name = "N/m", .kg = 1, .s = -2},
       {.name = "Pa", .kg = 1, .m = -1, .s = -2},
-      {.name = "J/m", .kg = 1, .m = 1, .s = -2}, {.name = "Pa.m^0.5", .integerPowers = false}};
+      {.name = "J/m", .kg = 1, .m = 1, .s = -2}, {.name = "J/m2", .kg = 1, .s = -2},
+      {.name = "kg/m3", .kg = 1, .m = -3}, {.name = "Pa.m^0.5", .integerPowers = false}};
   return units;
 }
 

@@ -59,6 +59,12 @@ struct SceneParameters {
   std::string timeIntegrator = "central_difference";
   double internalTimeStep = 0;      // [s]
   double integratorTolerance = 1e-6;
+  // The papers' material constants; every scene's Poisson ratio is poissonRatio.
+  double glassYoungsModulus = 80e9, crystalYoungsModulus = 133e9;   // GlassCeramic: E1, E2 [Pa] (000 Table 1)
+  double glassFractureEnergy = 6.59, crystalFractureEnergy = 86.35;  // GlassCeramic: G1, G2 [J/m^2]
+  double bulkModulus = 25e9;               // dynamic scenes: K [Pa] (001 Table 1)
+  double criticalEnergyReleaseRate = 500;  // dynamic scenes: G_c [J/m^2]
+  double density = 1200;                   // dynamic scenes: rho [kg/m^3]
   WorkLimits limits;
   ProgressHook progress;            // optional: told how far long set-ups and steps have come
 };
