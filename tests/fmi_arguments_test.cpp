@@ -7,24 +7,12 @@
 #include <limits>
 
 #include "fmi_abi_support.hpp"
+#include "fmi_refusal.hpp"
 
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
 namespace {
-
-// Runs a call that must be refused: fmi3Error and one logStatusError message with the fragment.
-void requireRefused(Session& s, const std::string& function, const std::string& fragment,
-                    const std::function<fmi3Status()>& call) {
-  s.log.clear();
-  CHECK(call() == fmi3Error);
-  REQUIRE(s.log.records.size() == 1);
-  const LogRecord& r = s.log.records.front();
-  CHECK(r.status == fmi3Error);
-  CHECK(r.category == "logStatusError");
-  CHECK_THAT(r.message, StartsWith(function + ": "));
-  CHECK_THAT(r.message, Contains(fragment));
-}
 
 fmi3Status setUInt64(Session& s, fmi3ValueReference vr, fmi3UInt64 value) {
   return s.fmu.fmi3SetUInt64(s.instance, &vr, 1, &value, 1);

@@ -13,7 +13,8 @@ using V = Variability;
 using I = Initial;
 using T = VarType;
 
-constexpr fmi3ValueReference kNx = PERISTEP_VR_NX, kNy = PERISTEP_VR_NY, kModes = PERISTEP_VR_NMODES;
+constexpr fmi3ValueReference kNx = PERISTEP_VR_NX, kNy = PERISTEP_VR_NY, kModes = PERISTEP_VR_NMODES,
+                             kCracks = PERISTEP_VR_NCRACKS;
 
 // Images are [ny][nx]: the outer dimension is ny (FMI arrays are row-major).
 std::vector<fmi3ValueReference> image() { return {kNy, kNx}; }
@@ -43,6 +44,10 @@ std::vector<Variable> makeTable() {
       {.name = "nModes", .vr = PERISTEP_VR_NMODES, .type = T::UInt64, .causality = C::StructuralParameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Length of xi; at least the number of random coordinates of the scene (smooth 1, composite 2)",
+       .start = "1", .min = Bound{1}, .max = Bound{1024}},
+      {.name = "nCracks", .vr = PERISTEP_VR_NCRACKS, .type = T::UInt64, .causality = C::StructuralParameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: number of pre-crack segments (length of crackX0, crackY0, crackX1, crackY1)",
        .start = "1", .min = Bound{1}, .max = Bound{1024}},
 
       {.name = "scene", .vr = PERISTEP_VR_SCENE, .type = T::Enumeration, .causality = C::Parameter,
@@ -170,6 +175,46 @@ std::vector<Variable> makeTable() {
        .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
        .description = "Fraction of the random field's variance carried by the retained KL or PCA modes; 1 otherwise",
        .dependencies = onNoInput()},
+      {.name = "reactionLeftX", .vr = PERISTEP_VR_REACTION_LEFT_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: x-force of the left grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionLeftY", .vr = PERISTEP_VR_REACTION_LEFT_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: y-force of the left grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionRightX", .vr = PERISTEP_VR_REACTION_RIGHT_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: x-force of the right grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionRightY", .vr = PERISTEP_VR_REACTION_RIGHT_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: y-force of the right grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionBottomX", .vr = PERISTEP_VR_REACTION_BOTTOM_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: x-force of the bottom grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionBottomY", .vr = PERISTEP_VR_REACTION_BOTTOM_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: y-force of the bottom grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionTopX", .vr = PERISTEP_VR_REACTION_TOP_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: x-force of the top grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionTopY", .vr = PERISTEP_VR_REACTION_TOP_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: y-force of the top grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
       {.name = "reactionForce", .vr = PERISTEP_VR_REACTION_FORCE, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Force per unit thickness of the top collar on the specimen (glass-ceramic); 0 where the "
@@ -248,6 +293,98 @@ std::vector<Variable> makeTable() {
                       "refuses a longer step up front, the SUNDIALS integrators stop there. 0: no limit",
        .start = "1000000", .min = Bound{0}},
 
+      // The specimen scene: the importer's plate on the vertex grid of the other quasi-static scenes.
+      {.name = "materialYoungsModulus", .vr = PERISTEP_VR_MATERIAL_YOUNGS_MODULUS, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: Young's modulus of each domain point; 0 = Void (no material: a hole or a "
+                      "cut-out edge)",
+       .unit = "Pa", .start = "80e9", .dimensions = image(), .min = Bound{0}},
+      {.name = "materialPoissonRatio", .vr = PERISTEP_VR_MATERIAL_POISSON_RATIO, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: Poisson's ratio (plane strain) of each domain point, -1 < nu < 0.5",
+       .start = "0.25", .dimensions = image(), .min = Bound{-1, true}, .max = Bound{0.5, true}},
+      {.name = "materialFractureEnergy", .vr = PERISTEP_VR_MATERIAL_FRACTURE_ENERGY, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: fracture energy G of each domain point, > 0 (a bond breaks at the critical "
+                      "stretch of the mean G of its ends, 000:(2.26))",
+       .unit = "J/m2", .start = "6.59", .dimensions = image(), .min = Bound{0, true}},
+      {.name = "crackX0", .vr = PERISTEP_VR_CRACK_X0, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x of the first end of each pre-crack segment (any angle); a segment of length 0 is no crack; bonds crossing a segment are broken from the start",
+       .unit = "m", .start = "0", .dimensions = {kCracks}},
+      {.name = "crackY0", .vr = PERISTEP_VR_CRACK_Y0, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y of the first end of each pre-crack segment; bonds crossing a segment are broken from the start",
+       .unit = "m", .start = "0", .dimensions = {kCracks}},
+      {.name = "crackX1", .vr = PERISTEP_VR_CRACK_X1, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x of the second end of each pre-crack segment; bonds crossing a segment are broken from the start",
+       .unit = "m", .start = "0", .dimensions = {kCracks}},
+      {.name = "crackY1", .vr = PERISTEP_VR_CRACK_Y1, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y of the second end of each pre-crack segment; bonds crossing a segment are broken from the start",
+       .unit = "m", .start = "0", .dimensions = {kCracks}},
+      {.name = "gripLeft", .vr = PERISTEP_VR_GRIP_LEFT, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: the left (x = -Lx/2) side, free or held by its collar (the corners go with bottom "
+                      "and top)",
+       .declaredType = "PeriStep.Grip", .start = "1"},
+      {.name = "gripRight", .vr = PERISTEP_VR_GRIP_RIGHT, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: the right (x = Lx/2) side, free or held by its collar (the corners go with bottom "
+                      "and top)",
+       .declaredType = "PeriStep.Grip", .start = "1"},
+      {.name = "gripBottom", .vr = PERISTEP_VR_GRIP_BOTTOM, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: the bottom (y = -Ly/2) side, free or held by its collar (the corners go with bottom "
+                      "and top)",
+       .declaredType = "PeriStep.Grip", .start = "2"},
+      {.name = "gripTop", .vr = PERISTEP_VR_GRIP_TOP, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: the top (y = Ly/2) side, free or held by its collar (the corners go with bottom "
+                      "and top)",
+       .declaredType = "PeriStep.Grip", .start = "2"},
+      {.name = "gripLeftUx", .vr = PERISTEP_VR_GRIP_LEFT_UX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x-displacement of the held left grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripLeftUy", .vr = PERISTEP_VR_GRIP_LEFT_UY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y-displacement of the held left grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripRightUx", .vr = PERISTEP_VR_GRIP_RIGHT_UX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x-displacement of the held right grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripRightUy", .vr = PERISTEP_VR_GRIP_RIGHT_UY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y-displacement of the held right grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripBottomUx", .vr = PERISTEP_VR_GRIP_BOTTOM_UX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x-displacement of the held bottom grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripBottomUy", .vr = PERISTEP_VR_GRIP_BOTTOM_UY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y-displacement of the held bottom grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripTopUx", .vr = PERISTEP_VR_GRIP_TOP_UX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x-displacement of the held top grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripTopUy", .vr = PERISTEP_VR_GRIP_TOP_UY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y-displacement of the held top grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "1e-6"},
+
       // The papers' material constants; a scene reads only its own.
       {.name = "glassYoungsModulus", .vr = PERISTEP_VR_GLASS_YOUNGS_MODULUS, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
@@ -322,7 +459,16 @@ const std::vector<EnumerationType>& enumerationTypes() {
          "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
         {"klPlate", PERISTEP_SCENE_KL_PLATE,
          "Plate with a Karhunen-Loeve random Young's modulus (nModes coordinates), stretched by loadFactor; "
-         "quasi-static: the DefaultExperiment fits"}}},
+         "quasi-static: the DefaultExperiment fits"},
+        {"specimen", PERISTEP_SCENE_SPECIMEN,
+         "The importer's specimen: plate Lx x Ly on the vertex grid, material maps materialYoungsModulus, "
+         "materialPoissonRatio, materialFractureEnergy, pre-cracks crackX0..crackY1, grips gripLeft..gripTop "
+         "moved by loadFactor; quasi-static brittle fracture (000 Sec. 3.3), every step breaks bonds until "
+         "equilibrium at its load"}}},
+      {"PeriStep.Grip",
+       "How a side of the specimen is loaded",
+       {{"free", PERISTEP_GRIP_FREE, "Traction-free: no collar beside the side"},
+        {"held", PERISTEP_GRIP_HELD, "The collar beside the side moves rigidly by loadFactor * (gripUx, gripUy)"}}},
       {"PeriStep.LinearSolver",
        "Sparse solvers of the (u, theta) system",
        {{"umfpack", PERISTEP_LINEAR_SOLVER_UMFPACK, "UMFPACK, 64-bit indices, METIS ordering"},

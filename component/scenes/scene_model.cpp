@@ -20,6 +20,7 @@ std::size_t randomCoordinates(const SceneParameters& p) {
     case SceneId::InterfaceCrack: return 2;
     case SceneId::GlassCeramic: return p.pcaRealizations > 0 ? p.xi.size() : 0;
     case SceneId::KlPlate: return p.xi.size();
+    case SceneId::Specimen: return 0;
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches: return 0;
@@ -41,10 +42,13 @@ double xiScale(SceneId scene, std::size_t) { return scene == SceneId::Smooth ? 0
 
 void validate(const SceneParameters& p) {
   require(p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack ||
-              p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || isDynamic(p.scene),
+              p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || p.scene == SceneId::Specimen ||
+              isDynamic(p.scene),
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p.scene))
     validateDynamicScene(p);  // cell-centred lattices: h = Lx/nx, not Lx/(nx-1)
+  else if (p.scene == SceneId::Specimen)
+    validate(p.specimen, p.grid);
   else
     validate(p.grid);
   validateElastic(1.0, p.poissonRatio);
@@ -102,6 +106,7 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
     case SceneId::InterfaceCrack: return makeInterfaceCrackRunner(p);
     case SceneId::GlassCeramic: return makeGlassCeramicRunner(p);
     case SceneId::KlPlate: return makeKlPlateRunner(p);
+    case SceneId::Specimen: return makeSpecimenRunner(p);
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches: return makeDynamicRunner(p);
@@ -175,6 +180,7 @@ double SceneModel::crackLength() const { return impl_->runner->crackLength(); }
 double SceneModel::brokenBonds() const { return impl_->runner->brokenBonds(); }
 double SceneModel::fractureEnergy() const { return impl_->runner->fractureEnergy(); }
 double SceneModel::toughnessKIC() const { return impl_->runner->toughnessKIC(); }
+std::array<double, 2> SceneModel::gripReaction(Side side) const { return impl_->runner->gripReaction(side); }
 double SceneModel::strainEnergy() const { return impl_->runner->strainEnergy(); }
 double SceneModel::kineticEnergy() const { return impl_->runner->kineticEnergy(); }
 double SceneModel::externalWork() const { return impl_->runner->externalWork(); }

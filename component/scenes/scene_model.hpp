@@ -2,6 +2,7 @@
 // A built-in scene assembled from plain parameters: the one object the FMI layer drives.
 // It hides every numerical detail (geometry, quadrature, model, solver) behind set-up, advance and
 // read-out, and throws InvalidInput / SolverFailure with a precise message; it never terminates.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -10,6 +11,7 @@
 
 #include "core/progress.hpp"
 #include "geometry/point_cloud.hpp"
+#include "scenes/specimen.hpp"
 
 namespace peristep {
 
@@ -22,6 +24,7 @@ enum class SceneId : std::int64_t {
   BendingOneNotch = 6,    // 001 Sec. 6.2: dynamic three-point bending, one pre-crack
   BendingTwoNotches = 7,  // 001 Sec. 6.2: the same with two pre-cracks
   KlPlate = 8,         // plate whose Young's modulus is a Karhunen-Loeve random field (000 Sec. 2.2)
+  Specimen = 9,        // the importer's plate: material maps, pre-cracks, grips (scenes/specimen.hpp)
 };
 
 // Law of a standardized coordinate; Unused: the scene ignores that entry of xi.
@@ -65,6 +68,7 @@ struct SceneParameters {
   double bulkModulus = 25e9;               // dynamic scenes: K [Pa] (001 Table 1)
   double criticalEnergyReleaseRate = 500;  // dynamic scenes: G_c [J/m^2]
   double density = 1200;                   // dynamic scenes: rho [kg/m^3]
+  SpecimenSpec specimen;                   // Specimen: material maps, pre-cracks, grips
   WorkLimits limits;
   ProgressHook progress;            // optional: told how far long set-ups and steps have come
 };
@@ -137,6 +141,8 @@ class SceneModel {
   double brokenBonds() const;
   double fractureEnergy() const;
   double toughnessKIC() const;
+  // Specimen scene: (x, y) force of a held grip's collar on the specimen [N/m]; 0 for a free one.
+  std::array<double, 2> gripReaction(Side side) const;
   // Dynamic scenes (0 otherwise), per unit thickness: elastic energy PD(u) 001:(11), kinetic energy,
   // work of the loads since the start; and the force evaluations the integrator has spent.
   double strainEnergy() const;
