@@ -45,11 +45,11 @@ FieldTransform fieldTransform(std::int64_t value) {
   throw InvalidInput("unknown field transform " + std::to_string(value));
 }
 
-std::string integratorName(std::int64_t value) {
+TimeIntegratorKind integrator(std::int64_t value) {
   switch (value) {
-    case PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE: return "central_difference";
-    case PERISTEP_INTEGRATOR_ARKODE_ERK: return "arkode_erk";
-    case PERISTEP_INTEGRATOR_CVODE_BDF: return "cvode_bdf";
+    case PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE: return TimeIntegratorKind::CentralDifference;
+    case PERISTEP_INTEGRATOR_ARKODE_ERK: return TimeIntegratorKind::ArkodeErk;
+    case PERISTEP_INTEGRATOR_CVODE_BDF: return TimeIntegratorKind::CvodeBdf;
   }
   throw InvalidInput("unknown time integrator " + std::to_string(value));
 }
@@ -177,7 +177,7 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   const auto xi = v.get<double>(PERISTEP_VR_XI);
   p.xi.assign(xi.begin(), xi.end());
   p.linearSolver = solverName(v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER));
-  p.timeIntegrator = integratorName(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
+  p.timeIntegrator = integrator(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
   p.internalTimeStep = v.scalar<double>(PERISTEP_VR_INTERNAL_TIME_STEP);
   p.integratorTolerance = v.scalar<double>(PERISTEP_VR_INTEGRATOR_TOLERANCE);
   p.glassYoungsModulus = v.scalar<double>(PERISTEP_VR_GLASS_YOUNGS_MODULUS);

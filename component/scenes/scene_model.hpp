@@ -12,6 +12,7 @@
 #include "core/progress.hpp"
 #include "geometry/point_cloud.hpp"
 #include "scenes/specimen.hpp"
+#include "solvers/time_integrator_kind.hpp"
 
 namespace peristep {
 
@@ -57,9 +58,9 @@ struct SceneParameters {
   double correlationLength = 0.5;   // l [m]
   double fieldStd = 0.3;            // s
   FieldTransform transform = FieldTransform::Affine;
-  // Dynamic scenes (5-7): the time integrator by name (solvers/time_integrator.hpp), the central
-  // difference step (0: the scene's step from 001) and the SUNDIALS relative tolerance.
-  std::string timeIntegrator = "central_difference";
+  // Dynamic scenes (5-7): the time integrator (solvers/time_integrator.hpp), the central difference step
+  // (0: the scene's step from 001) and the SUNDIALS relative tolerance.
+  TimeIntegratorKind timeIntegrator = TimeIntegratorKind::CentralDifference;
   double internalTimeStep = 0;      // [s]
   double integratorTolerance = 1e-6;
   // The papers' material constants; every scene's Poisson ratio is poissonRatio.
