@@ -107,6 +107,7 @@ enum PeriStepValueReference {
   PERISTEP_VR_GRIP_BOTTOM_UY = 96,
   PERISTEP_VR_GRIP_TOP_UX = 97,
   PERISTEP_VR_GRIP_TOP_UY = 98,
+  PERISTEP_VR_MATERIAL_FIELD = 99,           /* Enumeration: enum PeriStepMaterialField */
   PERISTEP_VR_REACTION_LEFT_X = 100,         /* Float64, N/m: force of each held grip on the specimen */
   PERISTEP_VR_REACTION_LEFT_Y = 101,
   PERISTEP_VR_REACTION_RIGHT_X = 102,
@@ -128,6 +129,12 @@ enum PeriStepScene {
   PERISTEP_SCENE_BENDING_TWO_NOTCHES = 7,  /* the same with two pre-cracks */
   PERISTEP_SCENE_KL_PLATE = 8,        /* plate with a Karhunen-Loeve random Young's modulus */
   PERISTEP_SCENE_SPECIMEN = 9         /* the importer's specimen: material maps, pre-cracks, grips */
+};
+
+/* Values of the enumeration PeriStep.MaterialField (variable "materialField", specimen scene) */
+enum PeriStepMaterialField {
+  PERISTEP_MATERIAL_MAP = 1,     /* the maps as given */
+  PERISTEP_MATERIAL_KL_FIELD = 2 /* Young's modulus map times the KL factor of xi (as the KL plate's E0 = 1) */
 };
 
 /* Values of the enumeration PeriStep.Grip (variables "gripLeft" ... "gripTop", specimen scene) */

@@ -87,6 +87,41 @@ TEST_CASE("a notched plate with a stiff inclusion cracks from the notch and pass
   }
 }
 
+TEST_CASE("a specimen's modulus map carries the KL random field of xi", "[abi][specimen]") {
+  // Two coordinates; the map is the inclusion plate's. With xi = 0 and the affine transform the factor is
+  // exactly 1; with xi = (1.5, -1) it varies about the map, proportionally in the matrix and the inclusion.
+  const auto modulus = [](std::vector<double> xi) {
+    Session s;
+    setUpNotchedPlate(s, true);
+    const fmi3ValueReference vr[] = {PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NMODES};
+    const fmi3UInt64 v[] = {kNx, kNy, 2};
+    REQUIRE(s.fmu.fmi3EnterConfigurationMode(s.instance) == fmi3OK);
+    REQUIRE(s.fmu.fmi3SetUInt64(s.instance, vr, 3, v, 3) == fmi3OK);
+    REQUIRE(s.fmu.fmi3ExitConfigurationMode(s.instance) == fmi3OK);
+    REQUIRE(s.setInt64(PERISTEP_VR_MATERIAL_FIELD, PERISTEP_MATERIAL_KL_FIELD) == fmi3OK);
+    REQUIRE(s.setFloat64(PERISTEP_VR_XI, xi) == fmi3OK);
+    REQUIRE(s.initialize() == fmi3OK);
+    std::int32_t laws[2] = {-1, -1};
+    const fmi3ValueReference lawRef = PERISTEP_VR_XI_DISTRIBUTION;
+    REQUIRE(s.fmu.fmi3GetInt32(s.instance, &lawRef, 1, laws, 2) == fmi3OK);
+    CHECK(laws[0] == PERISTEP_XI_NORMAL);
+    CHECK(laws[1] == PERISTEP_XI_NORMAL);
+    const double retained = s.getFloat64(PERISTEP_VR_RETAINED_VARIANCE).at(0);
+    CHECK(retained > 0);
+    CHECK(retained < 1);
+    return s.getFloat64(PERISTEP_VR_YOUNGS_MODULUS, kPoints);
+  };
+  const std::vector<double> map = youngsModulus(true), plain = modulus({0.0, 0.0}), random = modulus({1.5, -1.0});
+  CHECK(plain == map);
+  double lowest = 2, highest = 0;
+  for (std::size_t i = 0; i < kPoints; ++i) {
+    lowest = std::min(lowest, random[i] / map[i]);
+    highest = std::max(highest, random[i] / map[i]);
+  }
+  CHECK(lowest > 0);
+  CHECK(highest - lowest > 0.1);
+}
+
 TEST_CASE("a bad specimen is refused with one precise message", "[abi][specimen][arguments]") {
   Session s;
   setUpNotchedPlate(s, true);

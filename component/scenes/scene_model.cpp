@@ -20,7 +20,7 @@ std::size_t randomCoordinates(const SceneParameters& p) {
     case SceneId::InterfaceCrack: return 2;
     case SceneId::GlassCeramic: return p.pcaRealizations > 0 ? p.xi.size() : 0;
     case SceneId::KlPlate: return p.xi.size();
-    case SceneId::Specimen: return 0;
+    case SceneId::Specimen: return p.specimen.randomField ? p.xi.size() : 0;
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches: return 0;
@@ -31,6 +31,10 @@ std::size_t randomCoordinates(const SceneParameters& p) {
 bool isDynamic(SceneId scene) {
   return scene == SceneId::PlexiglassCrack || scene == SceneId::BendingOneNotch ||
          scene == SceneId::BendingTwoNotches;
+}
+
+bool usesKlField(const SceneParameters& p) {
+  return p.scene == SceneId::KlPlate || (p.scene == SceneId::Specimen && p.specimen.randomField);
 }
 
 XiDistribution xiDistribution(const SceneParameters& p, std::size_t k) {
@@ -59,7 +63,7 @@ void validate(const SceneParameters& p) {
   const std::size_t needed = randomCoordinates(p);
   require(p.xi.size() >= needed, "scene needs " + std::to_string(needed) + " random coordinates but nModes = " +
                                      std::to_string(p.xi.size()));
-  if (p.scene == SceneId::KlPlate) {
+  if (usesKlField(p)) {
     require(std::isfinite(p.correlationLength) && p.correlationLength > 0,
             "correlationLength must be positive and finite (got " + std::to_string(p.correlationLength) + ")");
     require(std::isfinite(p.fieldStd) && p.fieldStd > 0,

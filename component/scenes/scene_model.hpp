@@ -76,6 +76,8 @@ struct SceneParameters {
 
 // Scenes 5-7 integrate the equation of motion in time; the others are quasi-static.
 bool isDynamic(SceneId scene);
+// The KL plate and a specimen with a random field draw a Karhunen-Loeve field from xi.
+bool usesKlField(const SceneParameters& p);
 
 // What drives a step: the manufactured scenes and Test 3 scale their boundary data by loadFactor; the
 // glass-ceramic plate is opened by loadDisplacement (top collar +U_D, bottom collar -U_D).

@@ -25,6 +25,9 @@ struct SpecimenSpec {
   std::vector<double> youngsModulus, poissonRatio, fractureEnergy;  // [Pa], -, [J/m^2]
   std::vector<Segment> cracks;  // pre-cracks: bonds crossing one are broken from the start
   std::array<Grip, 4> grips{};  // by Side
+  // Young's modulus times the Karhunen-Loeve factor of mean 1 from the scene's xi, covariance, correlation
+  // length, standard deviation and transform (scenes/kl_material.hpp); Void stays Void.
+  bool randomField = false;
 };
 
 // Throws InvalidInput naming the first inconsistency: a map of the wrong length, a negative or non-finite

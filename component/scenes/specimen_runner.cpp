@@ -1,11 +1,13 @@
 // The importer's specimen behind the Runner face: the plate's cloud with a collar beside each held side,
-// Void where the material map is 0 (and beside free sides), the map's E, nu, G per point, bonds crossing
-// a pre-crack broken, and the quasi-static fracture driver moving the held collars by loadFactor.
+// Void where the material map is 0 (and beside free sides), the map's E (times a KL factor with a random
+// field), nu, G per point, bonds crossing a pre-crack broken, and the quasi-static fracture driver moving
+// the held collars by loadFactor.
 #include <algorithm>
 
 #include "fracture/bond_state.hpp"
 #include "models/lps_material.hpp"
 #include "quadrature/optimization_weights.hpp"
+#include "scenes/kl_material.hpp"
 #include "scenes/scene_runner.hpp"
 #include "scenes/specimen.hpp"
 #include "solvers/quasi_static_fracture.hpp"
@@ -37,6 +39,7 @@ struct Built {
   std::vector<double> E;  // per point [Pa]
   std::array<std::vector<std::uint8_t>, 4> collars;
   std::unique_ptr<QuasiStaticFracture> fracture;
+  double retainedVariance = 1.0;  // of the KL modes, with a random field
 };
 
 Built build(const SceneParameters& p) {
@@ -62,12 +65,18 @@ Built build(const SceneParameters& p) {
   // weights of 000:(3.18) then integrate over the part of the ball outside the material.
   d.weights = optimizationWeights(c, d.neighbours, std::vector<char>(c.size(), 1));
 
+  std::vector<double> factor(c.size(), 1.0);
+  if (s.randomField) {
+    const std::shared_ptr<const KlField> field = sharedKlField(c, p);
+    factor = klMaterial(*field, 1.0, p);
+    b.retainedVariance = field->retainedVarianceFraction();
+  }
   FractureMaterial mat;
   std::vector<double> unit(2 * c.size(), 0.0);
   for (auto& m : b.collars) m.assign(c.size(), 0);
   for (std::size_t q = 0; q < c.size(); ++q) {
     const Nearest n = nearest(c, q);
-    const double E = c.isVoid(q) ? 0.0 : s.youngsModulus[n.image];
+    const double E = c.isVoid(q) ? 0.0 : s.youngsModulus[n.image] * factor[q];
     const Lame l = planeStrain(E, s.poissonRatio[n.image]);
     b.E.push_back(E);
     mat.lambda.push_back(l.lambda);
@@ -117,6 +126,7 @@ class SpecimenRunner final : public Runner {
   std::array<double, 2> gripReaction(Side side) const override {
     return b_.fracture->collarForce(b_.collars[static_cast<std::size_t>(side)]);
   }
+  double retainedVariance() const override { return b_.retainedVariance; }
   std::vector<std::uint8_t> saveState() const override { return b_.fracture->saveState(); }
   void restoreState(std::span<const std::uint8_t> bytes) override { b_.fracture->restoreState(bytes); }
 
