@@ -88,6 +88,7 @@ enum PeriStepValueReference {
   PERISTEP_VR_DENSITY = 76,                  /* Float64, kg/m^3: dynamic scenes, rho */
 
   /* the specimen scene (PERISTEP_SCENE_SPECIMEN): material maps, pre-cracks and grips */
+  PERISTEP_VR_MATERIAL_FIELD = 79,           /* Enumeration: enum PeriStepMaterialField */
   PERISTEP_VR_MATERIAL_YOUNGS_MODULUS = 80,  /* Float64 [ny][nx], Pa: 0 = Void (a hole) */
   PERISTEP_VR_MATERIAL_POISSON_RATIO = 81,   /* Float64 [ny][nx] */
   PERISTEP_VR_MATERIAL_FRACTURE_ENERGY = 82, /* Float64 [ny][nx], J/m^2 */
@@ -107,7 +108,6 @@ enum PeriStepValueReference {
   PERISTEP_VR_GRIP_BOTTOM_UY = 96,
   PERISTEP_VR_GRIP_TOP_UX = 97,
   PERISTEP_VR_GRIP_TOP_UY = 98,
-  PERISTEP_VR_MATERIAL_FIELD = 99,           /* Enumeration: enum PeriStepMaterialField */
   PERISTEP_VR_REACTION_LEFT_X = 100,         /* Float64, N/m: force of each held grip on the specimen */
   PERISTEP_VR_REACTION_LEFT_Y = 101,
   PERISTEP_VR_REACTION_RIGHT_X = 102,
