@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "example_support.h"
 #include "fmi3FunctionTypes.h"
 #include "peristep.h"
 
@@ -26,25 +27,6 @@ static const char* const PICTURE[NY] = {
     "..................#####..........", "...................###...........", ".................................",
     ".................................", ".................................", ".................................",
     ".................................", "................................."};
-
-static void logMessage(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category, fmi3String message) {
-  (void)env;
-  fprintf(stderr, "PeriStep [%s, status %d]: %s\n", category, (int)status, message);
-}
-
-#define LOOKUP(name)                                            \
-  name##TYPE* name;                                             \
-  *(void**)(&name) = dlsym(library, #name);                     \
-  if (!name) {                                                  \
-    fprintf(stderr, "specimen: %s is not exported\n", #name);   \
-    return 1;                                                   \
-  }
-
-#define CHECK(call)                                             \
-  if ((call) != fmi3OK) {                                       \
-    fprintf(stderr, "specimen: %s failed\n", #call);            \
-    return 1;                                                   \
-  }
 
 /* The character of image point (i, j): image row 0 is the bottom (y = -Ly/2), the picture's last row. */
 static char at(int i, int j) { return PICTURE[NY - 1 - j][i]; }
