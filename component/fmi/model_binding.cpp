@@ -104,7 +104,8 @@ SpecimenSpec specimen(const ParameterValues& v) {
       {PERISTEP_VR_GRIP_TOP, PERISTEP_VR_GRIP_TOP_UX, PERISTEP_VR_GRIP_TOP_UY}};
   for (std::size_t k = 0; k < 4; ++k) {
     const std::int64_t grip = v.scalar<std::int64_t>(grips[k][0]);
-    if (grip != PERISTEP_GRIP_FREE && grip != PERISTEP_GRIP_HELD) throw InvalidInput("unknown grip " + std::to_string(grip));
+    if (grip != PERISTEP_GRIP_FREE && grip != PERISTEP_GRIP_HELD)
+      throw InvalidInput("unknown grip " + std::to_string(grip));
     s.grips[k] = {grip == PERISTEP_GRIP_HELD, v.scalar<double>(grips[k][1]), v.scalar<double>(grips[k][2])};
   }
   return s;

@@ -317,39 +317,40 @@ std::vector<Variable> makeTable() {
        .unit = "J/m2", .start = "6.59", .dimensions = image(), .min = Bound{0, true}},
       {.name = "crackX0", .vr = PERISTEP_VR_CRACK_X0, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Specimen scene: x of the first end of each pre-crack segment (any angle); a segment of length 0 is no crack; bonds crossing a segment are broken from the start",
+       .description = "Specimen scene: x of the first end of each pre-crack segment (any angle, inside the plate); "
+                      "bonds crossing a segment are broken from the start, a segment of length 0 is none",
        .unit = "m", .start = "0", .dimensions = {kCracks}},
       {.name = "crackY0", .vr = PERISTEP_VR_CRACK_Y0, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Specimen scene: y of the first end of each pre-crack segment; bonds crossing a segment are broken from the start",
+       .description = "Specimen scene: y of the first end of each pre-crack segment",
        .unit = "m", .start = "0", .dimensions = {kCracks}},
       {.name = "crackX1", .vr = PERISTEP_VR_CRACK_X1, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Specimen scene: x of the second end of each pre-crack segment; bonds crossing a segment are broken from the start",
+       .description = "Specimen scene: x of the second end of each pre-crack segment",
        .unit = "m", .start = "0", .dimensions = {kCracks}},
       {.name = "crackY1", .vr = PERISTEP_VR_CRACK_Y1, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Specimen scene: y of the second end of each pre-crack segment; bonds crossing a segment are broken from the start",
+       .description = "Specimen scene: y of the second end of each pre-crack segment",
        .unit = "m", .start = "0", .dimensions = {kCracks}},
       {.name = "gripLeft", .vr = PERISTEP_VR_GRIP_LEFT, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Specimen scene: the left (x = -Lx/2) side, free or held by its collar (the corners go with bottom "
-                      "and top)",
+       .description = "Specimen scene: the left side (x = -Lx/2), free or held by its collar (the collar's "
+                      "corners go with bottom and top)",
        .declaredType = "PeriStep.Grip", .start = "1"},
       {.name = "gripRight", .vr = PERISTEP_VR_GRIP_RIGHT, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Specimen scene: the right (x = Lx/2) side, free or held by its collar (the corners go with bottom "
-                      "and top)",
+       .description = "Specimen scene: the right side (x = Lx/2), free or held by its collar (the collar's "
+                      "corners go with bottom and top)",
        .declaredType = "PeriStep.Grip", .start = "1"},
       {.name = "gripBottom", .vr = PERISTEP_VR_GRIP_BOTTOM, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Specimen scene: the bottom (y = -Ly/2) side, free or held by its collar (the corners go with bottom "
-                      "and top)",
+       .description = "Specimen scene: the bottom side (y = -Ly/2), free or held by its collar (the collar's "
+                      "corners go with bottom and top)",
        .declaredType = "PeriStep.Grip", .start = "2"},
       {.name = "gripTop", .vr = PERISTEP_VR_GRIP_TOP, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Specimen scene: the top (y = Ly/2) side, free or held by its collar (the corners go with bottom "
-                      "and top)",
+       .description = "Specimen scene: the top side (y = Ly/2), free or held by its collar (the collar's "
+                      "corners go with bottom and top)",
        .declaredType = "PeriStep.Grip", .start = "2"},
       {.name = "gripLeftUx", .vr = PERISTEP_VR_GRIP_LEFT_UX, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
