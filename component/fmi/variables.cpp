@@ -55,8 +55,9 @@ std::vector<Variable> makeTable() {
        .declaredType = "PeriStep.Scene", .start = "1"},
       {.name = "Lx", .vr = PERISTEP_VR_LX, .type = T::Float64, .causality = C::Parameter, .variability = V::Fixed,
        .initial = I::Exact,
-       .description = "Domain width, > 0: the domain is [-Lx/2, Lx/2] x [-Ly/2, Ly/2] and Lx/(nx-1) must equal "
-                      "Ly/(ny-1)",
+       .description = "Domain width, > 0. Quasi-static scenes and specimen: a vertex grid on [-Lx/2, Lx/2] x "
+                      "[-Ly/2, Ly/2], points on the edges, h = Lx/(nx-1) = Ly/(ny-1); dynamic scenes: a cell-centred "
+                      "lattice on [0, Lx] x [0, Ly], each point the centre of an h x h cell, h = Lx/nx = Ly/ny",
        .unit = "m", .start = "1", .min = Bound{0, true}},
       {.name = "Ly", .vr = PERISTEP_VR_LY, .type = T::Float64, .causality = C::Parameter, .variability = V::Fixed,
        .initial = I::Exact, .description = "Domain height, > 0", .unit = "m", .start = "1",
