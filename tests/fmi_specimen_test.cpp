@@ -1,7 +1,7 @@
 // The specimen scene through the C ABI only: a plate with an inclined edge notch and a stiff circular
 // inclusion, pulled at the top, cracks from the notch and passes the inclusion on one side, where the
-// same plate without the inclusion cracks straight through its place; a bad description is refused with
-// one message.
+// same plate without the inclusion cracks straight through its place; an FMU state repeats a cracking
+// step, the modulus map carries the KL field, and a bad description is refused with one message.
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
@@ -85,6 +85,36 @@ TEST_CASE("a notched plate with a stiff inclusion cracks from the notch and pass
     const std::size_t i = j * kNx + kNx / 2;
     if (a.damage[i] > kCracked) CHECK(std::abs(yOf(i) - kYc) > kR);
   }
+}
+
+TEST_CASE("an FMU state of a cracking specimen repeats its steps bit for bit", "[abi][specimen][state]") {
+  Session s;
+  setUpNotchedPlate(s, true);
+  REQUIRE(s.initialize(0, 10) == fmi3OK);
+  REQUIRE(s.setFloat64(PERISTEP_VR_LOAD_FACTOR, {3.5}) == fmi3OK);
+  REQUIRE(s.step(0, 1) == fmi3OK);
+  fmi3FMUState state = nullptr;
+  REQUIRE(s.fmu.fmi3GetFMUState(s.instance, &state) == fmi3OK);
+  // Loads 5 and 5.25 grow the crack from the notch tip (bonds break in both steps).
+  const auto run = [&] {
+    std::vector<double> out;
+    for (int k = 0; k < 2; ++k) {
+      REQUIRE(s.setFloat64(PERISTEP_VR_LOAD_FACTOR, {5.0 + 0.25 * k}) == fmi3OK);
+      REQUIRE(s.step(1 + k, 1) == fmi3OK);
+      const auto d = s.getFloat64(PERISTEP_VR_DAMAGE, kPoints);
+      out.insert(out.end(), d.begin(), d.end());
+      out.push_back(s.getFloat64(PERISTEP_VR_REACTION_TOP_Y).at(0));
+      out.push_back(s.getFloat64(PERISTEP_VR_BROKEN_BONDS).at(0));
+    }
+    return out;
+  };
+  const double before = s.getFloat64(PERISTEP_VR_BROKEN_BONDS).at(0);
+  const std::vector<double> first = run();
+  CHECK(first.back() > before);
+  REQUIRE(s.fmu.fmi3SetFMUState(s.instance, state) == fmi3OK);
+  CHECK(s.getFloat64(PERISTEP_VR_BROKEN_BONDS).at(0) == before);
+  CHECK(run() == first);
+  REQUIRE(s.fmu.fmi3FreeFMUState(s.instance, &state) == fmi3OK);
 }
 
 TEST_CASE("a specimen's modulus map carries the KL random field of xi", "[abi][specimen]") {
