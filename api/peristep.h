@@ -16,6 +16,7 @@ enum PeriStepValueReference {
   PERISTEP_VR_NX = 1,      /* UInt64: points per side in x */
   PERISTEP_VR_NY = 2,      /* UInt64: points per side in y */
   PERISTEP_VR_NMODES = 3,  /* UInt64: length of xi */
+  PERISTEP_VR_NCRACKS = 4, /* UInt64: pre-cracks of the specimen scene (length of crackX0 ...) */
 
   /* parameters */
   PERISTEP_VR_SCENE = 10,            /* Enumeration (fmi3Get/SetInt64): enum PeriStepScene */
@@ -75,7 +76,46 @@ enum PeriStepValueReference {
   /* bounds on the work one call may start (refused up front with the estimate) */
   PERISTEP_VR_MEMORY_BUDGET = 63,     /* UInt64, bytes: estimated set-up memory; 0: 3/4 of usable memory */
   PERISTEP_VR_SET_UP_TIME_LIMIT = 64, /* Float64, s: estimated set-up time; 0: no limit */
-  PERISTEP_VR_MAX_INTERNAL_STEPS = 65 /* UInt64: internal time steps per fmi3DoStep; 0: no limit */
+  PERISTEP_VR_MAX_INTERNAL_STEPS = 65, /* UInt64: internal time steps per fmi3DoStep; 0: no limit */
+
+  /* material constants of the built-in scenes (start values: the papers'); nu is poissonRatio */
+  PERISTEP_VR_GLASS_YOUNGS_MODULUS = 70,     /* Float64, Pa: glass-ceramic, glass phase E1 (000 Table 1) */
+  PERISTEP_VR_CRYSTAL_YOUNGS_MODULUS = 71,   /* Float64, Pa: glass-ceramic, crystal phase E2 */
+  PERISTEP_VR_GLASS_FRACTURE_ENERGY = 72,    /* Float64, J/m^2: glass-ceramic, glass phase G1 */
+  PERISTEP_VR_CRYSTAL_FRACTURE_ENERGY = 73,  /* Float64, J/m^2: glass-ceramic, crystal phase G2 */
+  PERISTEP_VR_BULK_MODULUS = 74,             /* Float64, Pa: dynamic scenes, K (001 Table 1) */
+  PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE = 75, /* Float64, J/m^2: dynamic scenes, G_c */
+  PERISTEP_VR_DENSITY = 76,                  /* Float64, kg/m^3: dynamic scenes, rho */
+
+  /* the specimen scene (PERISTEP_SCENE_SPECIMEN): material maps, pre-cracks and grips */
+  PERISTEP_VR_MATERIAL_FIELD = 79,           /* Enumeration: enum PeriStepMaterialField */
+  PERISTEP_VR_MATERIAL_YOUNGS_MODULUS = 80,  /* Float64 [ny][nx], Pa: 0 = Void (a hole) */
+  PERISTEP_VR_MATERIAL_POISSON_RATIO = 81,   /* Float64 [ny][nx] */
+  PERISTEP_VR_MATERIAL_FRACTURE_ENERGY = 82, /* Float64 [ny][nx], J/m^2 */
+  PERISTEP_VR_CRACK_X0 = 83,                 /* Float64 [nCracks], m: pre-crack segments (x0, y0)-(x1, y1) */
+  PERISTEP_VR_CRACK_Y0 = 84,
+  PERISTEP_VR_CRACK_X1 = 85,
+  PERISTEP_VR_CRACK_Y1 = 86,
+  PERISTEP_VR_GRIP_LEFT = 87,                /* Enumeration: enum PeriStepGrip */
+  PERISTEP_VR_GRIP_RIGHT = 88,
+  PERISTEP_VR_GRIP_BOTTOM = 89,
+  PERISTEP_VR_GRIP_TOP = 90,
+  PERISTEP_VR_GRIP_LEFT_UX = 91,             /* Float64, m: displacement of a held grip at loadFactor 1 */
+  PERISTEP_VR_GRIP_LEFT_UY = 92,
+  PERISTEP_VR_GRIP_RIGHT_UX = 93,
+  PERISTEP_VR_GRIP_RIGHT_UY = 94,
+  PERISTEP_VR_GRIP_BOTTOM_UX = 95,
+  PERISTEP_VR_GRIP_BOTTOM_UY = 96,
+  PERISTEP_VR_GRIP_TOP_UX = 97,
+  PERISTEP_VR_GRIP_TOP_UY = 98,
+  PERISTEP_VR_REACTION_LEFT_X = 100,         /* Float64, N/m: force of each held grip on the specimen */
+  PERISTEP_VR_REACTION_LEFT_Y = 101,
+  PERISTEP_VR_REACTION_RIGHT_X = 102,
+  PERISTEP_VR_REACTION_RIGHT_Y = 103,
+  PERISTEP_VR_REACTION_BOTTOM_X = 104,
+  PERISTEP_VR_REACTION_BOTTOM_Y = 105,
+  PERISTEP_VR_REACTION_TOP_X = 106,
+  PERISTEP_VR_REACTION_TOP_Y = 107
 };
 
 /* Values of the enumeration PeriStep.Scene (variable "scene") */
@@ -87,7 +127,20 @@ enum PeriStepScene {
   PERISTEP_SCENE_PLEXIGLASS_CRACK = 5,     /* dynamic crack in a Plexiglass square (Jha-Lipton, Sec. 6.1) */
   PERISTEP_SCENE_BENDING_ONE_NOTCH = 6,    /* dynamic three-point bending, one pre-crack (Jha-Lipton, Sec. 6.2) */
   PERISTEP_SCENE_BENDING_TWO_NOTCHES = 7,  /* the same with two pre-cracks */
-  PERISTEP_SCENE_KL_PLATE = 8         /* plate with a Karhunen-Loeve random Young's modulus */
+  PERISTEP_SCENE_KL_PLATE = 8,        /* plate with a Karhunen-Loeve random Young's modulus */
+  PERISTEP_SCENE_SPECIMEN = 9         /* the importer's specimen: material maps, pre-cracks, grips */
+};
+
+/* Values of the enumeration PeriStep.MaterialField (variable "materialField", specimen scene) */
+enum PeriStepMaterialField {
+  PERISTEP_MATERIAL_MAP = 1,     /* the maps as given */
+  PERISTEP_MATERIAL_KL_FIELD = 2 /* Young's modulus map times the KL factor of xi (as the KL plate's E0 = 1) */
+};
+
+/* Values of the enumeration PeriStep.Grip (variables "gripLeft" ... "gripTop", specimen scene) */
+enum PeriStepGrip {
+  PERISTEP_GRIP_FREE = 1, /* traction-free side */
+  PERISTEP_GRIP_HELD = 2  /* the collar beside the side moves rigidly by loadFactor * (gripUx, gripUy) */
 };
 
 /* Values of the enumeration PeriStep.LinearSolver (variable "linearSolver") */

@@ -7,24 +7,12 @@
 #include <limits>
 
 #include "fmi_abi_support.hpp"
+#include "fmi_refusal.hpp"
 
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
 namespace {
-
-// Runs a call that must be refused: fmi3Error and one logStatusError message with the fragment.
-void requireRefused(Session& s, const std::string& function, const std::string& fragment,
-                    const std::function<fmi3Status()>& call) {
-  s.log.clear();
-  CHECK(call() == fmi3Error);
-  REQUIRE(s.log.records.size() == 1);
-  const LogRecord& r = s.log.records.front();
-  CHECK(r.status == fmi3Error);
-  CHECK(r.category == "logStatusError");
-  CHECK_THAT(r.message, StartsWith(function + ": "));
-  CHECK_THAT(r.message, Contains(fragment));
-}
 
 fmi3Status setUInt64(Session& s, fmi3ValueReference vr, fmi3UInt64 value) {
   return s.fmu.fmi3SetUInt64(s.instance, &vr, 1, &value, 1);
@@ -71,6 +59,14 @@ TEST_CASE("non-physical and non-finite values are refused when they are set", "[
   SECTION("Ly infinite") {
     requireRefused(s, "fmi3SetFloat64", "Ly (vr 12) must be finite, got inf",
                    [&] { return s.setFloat64(PERISTEP_VR_LY, {inf}); });
+  }
+  SECTION("a negative modulus") {
+    requireRefused(s, "fmi3SetFloat64", "bulkModulus (vr 74) must lie in (0, inf), got -2.5e+10",
+                   [&] { return s.setFloat64(PERISTEP_VR_BULK_MODULUS, {-25e9}); });
+  }
+  SECTION("a zero fracture energy") {
+    requireRefused(s, "fmi3SetFloat64", "glassFractureEnergy (vr 72) must lie in (0, inf), got 0",
+                   [&] { return s.setFloat64(PERISTEP_VR_GLASS_FRACTURE_ENERGY, {0.0}); });
   }
   SECTION("modulusContrast 0") {
     requireRefused(s, "fmi3SetFloat64", "modulusContrast (vr 15) must lie in (0, inf)",

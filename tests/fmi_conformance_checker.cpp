@@ -113,6 +113,7 @@ std::vector<std::string> initialChoices(const std::string& variability, const st
 const std::set<std::string> kDimensionless{
     "deltaOverH",           // horizon over grid spacing
     "poissonRatio",         //
+    "materialPoissonRatio", // Poisson ratio per point
     "modulusContrast",      // ratio of two moduli
     "jitter",               // fraction of the grid spacing
     "xi",                   // standardized random coordinates

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "fmi_abi_support.hpp"
+#include "fmi_refusal.hpp"
 
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
@@ -97,16 +98,6 @@ const std::vector<Call>& calls() {
        {"no Event Mode", "no Event Mode", "no Event Mode", "no Event Mode", "no Event Mode"}},
   };
   return table;
-}
-
-// The single message of a failed call.
-void requireOneError(const Session& s, const std::string& function, const std::string& fragment) {
-  REQUIRE(s.log.records.size() == 1);
-  const LogRecord& r = s.log.records.front();
-  CHECK(r.status == fmi3Error);
-  CHECK(r.category == "logStatusError");
-  CHECK_THAT(r.message, StartsWith(function + ": "));
-  CHECK_THAT(r.message, Contains(fragment));
 }
 
 }  // namespace

@@ -43,15 +43,19 @@ def compare(label, reader, h5):
     shown = list(reader.TimestepValues) if len(times) > 1 else [reader.TimestepValues]
     check(np.array_equal(np.array(shown, dtype=float), times), f"{label}: time steps {shown} != {list(times)}")
     grid_fields = [n for n in h5["fields"] if h5["fields"][n].shape[1:] == h5["grid/x"].shape]
+    # Parameters on the grid (the specimen's material maps) are constant point arrays, stored in /grid.
+    grid_parameters = [n for n in h5["grid"] if n not in ("x", "y") and h5["grid"][n].shape == h5["grid/x"].shape]
     for k in sorted({0, len(times) // 2, len(times) - 1}):
         where = f"{label}, step {k + 1} of {len(times)}"
         d = dataset(reader, times[k])
         points = np.asarray(d.Points)
         check(np.array_equal(points[:, 0], h5["grid/x"][...].ravel()), f"{where}: x differs")
         check(np.array_equal(points[:, 1], h5["grid/y"][...].ravel()), f"{where}: y differs")
-        check(sorted(d.PointData.keys()) == sorted(grid_fields), f"{where}: point arrays {sorted(d.PointData.keys())}")
-        for name in grid_fields:
-            shown_values, stored = np.asarray(d.PointData[name]), h5["fields"][name][k].ravel()
+        check(sorted(d.PointData.keys()) == sorted(grid_fields + grid_parameters),
+              f"{where}: point arrays {sorted(d.PointData.keys())}")
+        stored_arrays = [(n, h5["fields"][n][k]) for n in grid_fields] + [(n, h5["grid"][n]) for n in grid_parameters]
+        for name, stored in stored_arrays:
+            shown_values, stored = np.asarray(d.PointData[name]), stored[...].ravel()
             check(shown_values.shape == stored.shape and np.array_equal(shown_values, stored),
                   f"{where}: field {name} differs (max |stored| {np.max(np.abs(stored)):.3e})")
         series = [("scalars/" + n, n) for n in h5["scalars"]] + [("inputs/" + n, n) for n in h5.get("inputs", {})]

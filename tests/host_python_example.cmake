@@ -1,4 +1,4 @@
-# Runs examples/python/embed.py (cmake -P, from CTest). Without numpy it SKIPS, except in CI (the CI
+# Runs a Python example, SCRIPT (cmake -P, from CTest). Without numpy it SKIPS, except in CI (the CI
 # environment variable set), where the example must run.
 execute_process(COMMAND ${PYTHON} -c "import numpy" RESULT_VARIABLE numpy_missing OUTPUT_QUIET ERROR_QUIET)
 if(NOT numpy_missing EQUAL 0)
@@ -10,5 +10,5 @@ if(NOT numpy_missing EQUAL 0)
 endif()
 execute_process(COMMAND ${PYTHON} ${SCRIPT} ${LIBRARY} RESULT_VARIABLE failed)
 if(NOT failed EQUAL 0)
-  message(FATAL_ERROR "examples/python/embed.py failed (${failed})")
+  message(FATAL_ERROR "${SCRIPT} failed (${failed})")
 endif()

@@ -24,6 +24,7 @@ SceneId sceneId(std::int64_t value) {
     case PERISTEP_SCENE_PLEXIGLASS_CRACK: return SceneId::PlexiglassCrack;
     case PERISTEP_SCENE_BENDING_ONE_NOTCH: return SceneId::BendingOneNotch;
     case PERISTEP_SCENE_BENDING_TWO_NOTCHES: return SceneId::BendingTwoNotches;
+    case PERISTEP_SCENE_SPECIMEN: return SceneId::Specimen;
   }
   throw InvalidInput("unknown scene " + std::to_string(value));
 }
@@ -44,11 +45,11 @@ FieldTransform fieldTransform(std::int64_t value) {
   throw InvalidInput("unknown field transform " + std::to_string(value));
 }
 
-std::string integratorName(std::int64_t value) {
+TimeIntegratorKind integrator(std::int64_t value) {
   switch (value) {
-    case PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE: return "central_difference";
-    case PERISTEP_INTEGRATOR_ARKODE_ERK: return "arkode_erk";
-    case PERISTEP_INTEGRATOR_CVODE_BDF: return "cvode_bdf";
+    case PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE: return TimeIntegratorKind::CentralDifference;
+    case PERISTEP_INTEGRATOR_ARKODE_ERK: return TimeIntegratorKind::ArkodeErk;
+    case PERISTEP_INTEGRATOR_CVODE_BDF: return TimeIntegratorKind::CvodeBdf;
   }
   throw InvalidInput("unknown time integrator " + std::to_string(value));
 }
@@ -78,7 +79,39 @@ void exactMoment(M m, int which, std::span<double> out) {
   else copyField(v, out);
 }
 
-const std::array<ComputedVariable, 24> kComputed{{
+// A held grip's reaction component (0: x, 1: y).
+template <Side side, int component>
+void gripReaction(P, M m, std::span<double> out) {
+  out[0] = m->gripReaction(side)[component];
+}
+
+std::vector<double> copied(std::span<const double> v) { return {v.begin(), v.end()}; }
+
+SpecimenSpec specimen(const ParameterValues& v) {
+  SpecimenSpec s;
+  s.youngsModulus = copied(v.get<double>(PERISTEP_VR_MATERIAL_YOUNGS_MODULUS));
+  s.poissonRatio = copied(v.get<double>(PERISTEP_VR_MATERIAL_POISSON_RATIO));
+  s.fractureEnergy = copied(v.get<double>(PERISTEP_VR_MATERIAL_FRACTURE_ENERGY));
+  const auto x0 = v.get<double>(PERISTEP_VR_CRACK_X0), y0 = v.get<double>(PERISTEP_VR_CRACK_Y0);
+  const auto x1 = v.get<double>(PERISTEP_VR_CRACK_X1), y1 = v.get<double>(PERISTEP_VR_CRACK_Y1);
+  for (std::size_t k = 0; k < x0.size(); ++k) s.cracks.push_back({x0[k], y0[k], x1[k], y1[k]});
+  s.randomField = v.scalar<std::int64_t>(PERISTEP_VR_MATERIAL_FIELD) == PERISTEP_MATERIAL_KL_FIELD;
+  // Per side: the grip's enumeration and its displacement (x, y) at loadFactor 1.
+  const fmi3ValueReference grips[4][3] = {
+      {PERISTEP_VR_GRIP_LEFT, PERISTEP_VR_GRIP_LEFT_UX, PERISTEP_VR_GRIP_LEFT_UY},
+      {PERISTEP_VR_GRIP_RIGHT, PERISTEP_VR_GRIP_RIGHT_UX, PERISTEP_VR_GRIP_RIGHT_UY},
+      {PERISTEP_VR_GRIP_BOTTOM, PERISTEP_VR_GRIP_BOTTOM_UX, PERISTEP_VR_GRIP_BOTTOM_UY},
+      {PERISTEP_VR_GRIP_TOP, PERISTEP_VR_GRIP_TOP_UX, PERISTEP_VR_GRIP_TOP_UY}};
+  for (std::size_t k = 0; k < 4; ++k) {
+    const std::int64_t grip = v.scalar<std::int64_t>(grips[k][0]);
+    if (grip != PERISTEP_GRIP_FREE && grip != PERISTEP_GRIP_HELD)
+      throw InvalidInput("unknown grip " + std::to_string(grip));
+    s.grips[k] = {grip == PERISTEP_GRIP_HELD, v.scalar<double>(grips[k][1]), v.scalar<double>(grips[k][2])};
+  }
+  return s;
+}
+
+const std::array<ComputedVariable, 32> kComputed{{
     {PERISTEP_VR_XI_DISTRIBUTION, Needs::Parameters, nullptr,
      [](P p, M, std::span<std::int32_t> out) {
        const SceneParameters s = sceneParameters(p);
@@ -113,6 +146,14 @@ const std::array<ComputedVariable, 24> kComputed{{
     {PERISTEP_VR_EXTERNAL_WORK, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->externalWork(); }},
     {PERISTEP_VR_FORCE_EVALUATIONS, Needs::Solution,
      [](P, M m, std::span<double> out) { out[0] = m->forceEvaluations(); }},
+    {PERISTEP_VR_REACTION_LEFT_X, Needs::Solution, gripReaction<Side::Left, 0>},
+    {PERISTEP_VR_REACTION_LEFT_Y, Needs::Solution, gripReaction<Side::Left, 1>},
+    {PERISTEP_VR_REACTION_RIGHT_X, Needs::Solution, gripReaction<Side::Right, 0>},
+    {PERISTEP_VR_REACTION_RIGHT_Y, Needs::Solution, gripReaction<Side::Right, 1>},
+    {PERISTEP_VR_REACTION_BOTTOM_X, Needs::Solution, gripReaction<Side::Bottom, 0>},
+    {PERISTEP_VR_REACTION_BOTTOM_Y, Needs::Solution, gripReaction<Side::Bottom, 1>},
+    {PERISTEP_VR_REACTION_TOP_X, Needs::Solution, gripReaction<Side::Top, 0>},
+    {PERISTEP_VR_REACTION_TOP_Y, Needs::Solution, gripReaction<Side::Top, 1>},
 }};
 
 }  // namespace
@@ -138,9 +179,17 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   const auto xi = v.get<double>(PERISTEP_VR_XI);
   p.xi.assign(xi.begin(), xi.end());
   p.linearSolver = solverName(v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER));
-  p.timeIntegrator = integratorName(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
+  p.timeIntegrator = integrator(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
   p.internalTimeStep = v.scalar<double>(PERISTEP_VR_INTERNAL_TIME_STEP);
   p.integratorTolerance = v.scalar<double>(PERISTEP_VR_INTEGRATOR_TOLERANCE);
+  p.glassYoungsModulus = v.scalar<double>(PERISTEP_VR_GLASS_YOUNGS_MODULUS);
+  p.crystalYoungsModulus = v.scalar<double>(PERISTEP_VR_CRYSTAL_YOUNGS_MODULUS);
+  p.glassFractureEnergy = v.scalar<double>(PERISTEP_VR_GLASS_FRACTURE_ENERGY);
+  p.crystalFractureEnergy = v.scalar<double>(PERISTEP_VR_CRYSTAL_FRACTURE_ENERGY);
+  p.bulkModulus = v.scalar<double>(PERISTEP_VR_BULK_MODULUS);
+  p.criticalEnergyReleaseRate = v.scalar<double>(PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE);
+  p.density = v.scalar<double>(PERISTEP_VR_DENSITY);
+  if (p.scene == SceneId::Specimen) p.specimen = specimen(v);
   // memoryBudget 0: 3/4 of what the process can use, leaving room for the importer and other instances.
   const auto budget = v.scalar<std::uint64_t>(PERISTEP_VR_MEMORY_BUDGET);
   p.limits.memoryBytes = budget > 0 ? static_cast<double>(budget) : 0.75 * static_cast<double>(usableMemoryBytes());

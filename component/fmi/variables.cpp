@@ -13,7 +13,8 @@ using V = Variability;
 using I = Initial;
 using T = VarType;
 
-constexpr fmi3ValueReference kNx = PERISTEP_VR_NX, kNy = PERISTEP_VR_NY, kModes = PERISTEP_VR_NMODES;
+constexpr fmi3ValueReference kNx = PERISTEP_VR_NX, kNy = PERISTEP_VR_NY, kModes = PERISTEP_VR_NMODES,
+                             kCracks = PERISTEP_VR_NCRACKS;
 
 // Images are [ny][nx]: the outer dimension is ny (FMI arrays are row-major).
 std::vector<fmi3ValueReference> image() { return {kNy, kNx}; }
@@ -44,14 +45,19 @@ std::vector<Variable> makeTable() {
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Length of xi; at least the number of random coordinates of the scene (smooth 1, composite 2)",
        .start = "1", .min = Bound{1}, .max = Bound{1024}},
+      {.name = "nCracks", .vr = PERISTEP_VR_NCRACKS, .type = T::UInt64, .causality = C::StructuralParameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: number of pre-crack segments (length of crackX0, crackY0, crackX1, crackY1)",
+       .start = "1", .min = Bound{1}, .max = Bound{1024}},
 
       {.name = "scene", .vr = PERISTEP_VR_SCENE, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Built-in scene",
        .declaredType = "PeriStep.Scene", .start = "1"},
       {.name = "Lx", .vr = PERISTEP_VR_LX, .type = T::Float64, .causality = C::Parameter, .variability = V::Fixed,
        .initial = I::Exact,
-       .description = "Domain width, > 0: the domain is [-Lx/2, Lx/2] x [-Ly/2, Ly/2] and Lx/(nx-1) must equal "
-                      "Ly/(ny-1)",
+       .description = "Domain width, > 0. Quasi-static scenes and specimen: a vertex grid on [-Lx/2, Lx/2] x "
+                      "[-Ly/2, Ly/2], points on the edges, h = Lx/(nx-1) = Ly/(ny-1); dynamic scenes: a cell-centred "
+                      "lattice on [0, Lx] x [0, Ly], each point the centre of an h x h cell, h = Lx/nx = Ly/ny",
        .unit = "m", .start = "1", .min = Bound{0, true}},
       {.name = "Ly", .vr = PERISTEP_VR_LY, .type = T::Float64, .causality = C::Parameter, .variability = V::Fixed,
        .initial = I::Exact, .description = "Domain height, > 0", .unit = "m", .start = "1",
@@ -86,19 +92,21 @@ std::vector<Variable> makeTable() {
        .start = "0.2", .min = Bound{0, false}, .max = Bound{1, false}},
       {.name = "correlationLength", .vr = PERISTEP_VR_CORRELATION_LENGTH, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
-       .description = "KL plate: correlation length l of the covariance, > 0", .unit = "m", .start = "0.5",
-       .min = Bound{0, true}},
+       .description = "KL plate and specimen with a KL field: correlation length l of the covariance, > 0",
+       .unit = "m", .start = "0.5", .min = Bound{0, true}},
       {.name = "fieldStd", .vr = PERISTEP_VR_FIELD_STD, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "KL plate: standard deviation s of the Gaussian field g (E = E0 (1 + g) or E0 exp(g - s^2/2))",
+       .description = "KL plate and specimen with a KL field: standard deviation s of the Gaussian field g (E = E0 "
+                      "(1 + g) or E0 exp(g - s^2/2))",
        .start = "0.3", .min = Bound{0, true}},
       {.name = "covariance", .vr = PERISTEP_VR_COVARIANCE, .type = T::Enumeration, .causality = C::Parameter,
-       .variability = V::Fixed, .initial = I::Exact, .description = "KL plate: covariance kernel of g",
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "KL plate and specimen with a KL field: covariance kernel of g",
        .declaredType = "PeriStep.Covariance", .start = "1"},
       {.name = "fieldTransform", .vr = PERISTEP_VR_FIELD_TRANSFORM, .type = T::Enumeration,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
-       .description = "KL plate: how g becomes Young's modulus", .declaredType = "PeriStep.FieldTransform",
-       .start = "1"},
+       .description = "KL plate and specimen with a KL field: how g becomes Young's modulus",
+       .declaredType = "PeriStep.FieldTransform", .start = "1"},
       {.name = "pcaRealizations", .vr = PERISTEP_VR_PCA_REALIZATIONS, .type = T::UInt64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Glass-ceramic: 0 = the microstructure of seed; n > 0 = the PCA field 000:(5.5) of n "
@@ -170,6 +178,46 @@ std::vector<Variable> makeTable() {
        .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
        .description = "Fraction of the random field's variance carried by the retained KL or PCA modes; 1 otherwise",
        .dependencies = onNoInput()},
+      {.name = "reactionLeftX", .vr = PERISTEP_VR_REACTION_LEFT_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: x-force of the left grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionLeftY", .vr = PERISTEP_VR_REACTION_LEFT_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: y-force of the left grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionRightX", .vr = PERISTEP_VR_REACTION_RIGHT_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: x-force of the right grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionRightY", .vr = PERISTEP_VR_REACTION_RIGHT_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: y-force of the right grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionBottomX", .vr = PERISTEP_VR_REACTION_BOTTOM_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: x-force of the bottom grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionBottomY", .vr = PERISTEP_VR_REACTION_BOTTOM_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: y-force of the bottom grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionTopX", .vr = PERISTEP_VR_REACTION_TOP_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: x-force of the top grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
+      {.name = "reactionTopY", .vr = PERISTEP_VR_REACTION_TOP_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene: y-force of the top grip on the specimen per unit thickness (0 when "
+                      "free)",
+       .unit = "N/m", .dependencies = onLoadFactor()},
       {.name = "reactionForce", .vr = PERISTEP_VR_REACTION_FORCE, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Force per unit thickness of the top collar on the specimen (glass-ceramic); 0 where the "
@@ -247,6 +295,135 @@ std::vector<Variable> makeTable() {
        .description = "Dynamic scenes: most internal time steps one fmi3DoStep may take; central difference "
                       "refuses a longer step up front, the SUNDIALS integrators stop there. 0: no limit",
        .start = "1000000", .min = Bound{0}},
+
+      // The specimen scene: the importer's plate on the vertex grid of the other quasi-static scenes.
+      {.name = "materialYoungsModulus", .vr = PERISTEP_VR_MATERIAL_YOUNGS_MODULUS, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: Young's modulus of each domain point; 0 = Void (no material: a hole or a "
+                      "cut-out edge)",
+       .unit = "Pa", .start = "80e9", .dimensions = image(), .min = Bound{0}},
+      {.name = "materialField", .vr = PERISTEP_VR_MATERIAL_FIELD, .type = T::Enumeration,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: materialYoungsModulus as given, or times a Karhunen-Loeve random factor of "
+                      "mean 1 drawn from xi (nModes coordinates) as in the KL plate",
+       .declaredType = "PeriStep.MaterialField", .start = "1"},
+      {.name = "materialPoissonRatio", .vr = PERISTEP_VR_MATERIAL_POISSON_RATIO, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: Poisson's ratio (plane strain) of each domain point, -1 < nu < 0.5",
+       .start = "0.25", .dimensions = image(), .min = Bound{-1, true}, .max = Bound{0.5, true}},
+      {.name = "materialFractureEnergy", .vr = PERISTEP_VR_MATERIAL_FRACTURE_ENERGY, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: fracture energy G of each domain point, > 0 (a bond breaks at the critical "
+                      "stretch of the mean G of its ends, 000:(2.26))",
+       .unit = "J/m2", .start = "6.59", .dimensions = image(), .min = Bound{0, true}},
+      {.name = "crackX0", .vr = PERISTEP_VR_CRACK_X0, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x of the first end of each pre-crack segment (any angle, inside the plate); "
+                      "bonds crossing a segment are broken from the start, a segment of length 0 is none",
+       .unit = "m", .start = "0", .dimensions = {kCracks}},
+      {.name = "crackY0", .vr = PERISTEP_VR_CRACK_Y0, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y of the first end of each pre-crack segment",
+       .unit = "m", .start = "0", .dimensions = {kCracks}},
+      {.name = "crackX1", .vr = PERISTEP_VR_CRACK_X1, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x of the second end of each pre-crack segment",
+       .unit = "m", .start = "0", .dimensions = {kCracks}},
+      {.name = "crackY1", .vr = PERISTEP_VR_CRACK_Y1, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y of the second end of each pre-crack segment",
+       .unit = "m", .start = "0", .dimensions = {kCracks}},
+      {.name = "gripLeft", .vr = PERISTEP_VR_GRIP_LEFT, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: the left side (x = -Lx/2), free or held by its collar (the collar's "
+                      "corners go with bottom and top)",
+       .declaredType = "PeriStep.Grip", .start = "1"},
+      {.name = "gripRight", .vr = PERISTEP_VR_GRIP_RIGHT, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: the right side (x = Lx/2), free or held by its collar (the collar's "
+                      "corners go with bottom and top)",
+       .declaredType = "PeriStep.Grip", .start = "1"},
+      {.name = "gripBottom", .vr = PERISTEP_VR_GRIP_BOTTOM, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: the bottom side (y = -Ly/2), free or held by its collar (the collar's "
+                      "corners go with bottom and top)",
+       .declaredType = "PeriStep.Grip", .start = "2"},
+      {.name = "gripTop", .vr = PERISTEP_VR_GRIP_TOP, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: the top side (y = Ly/2), free or held by its collar (the collar's "
+                      "corners go with bottom and top)",
+       .declaredType = "PeriStep.Grip", .start = "2"},
+      {.name = "gripLeftUx", .vr = PERISTEP_VR_GRIP_LEFT_UX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x-displacement of the held left grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripLeftUy", .vr = PERISTEP_VR_GRIP_LEFT_UY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y-displacement of the held left grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripRightUx", .vr = PERISTEP_VR_GRIP_RIGHT_UX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x-displacement of the held right grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripRightUy", .vr = PERISTEP_VR_GRIP_RIGHT_UY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y-displacement of the held right grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripBottomUx", .vr = PERISTEP_VR_GRIP_BOTTOM_UX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x-displacement of the held bottom grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripBottomUy", .vr = PERISTEP_VR_GRIP_BOTTOM_UY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y-displacement of the held bottom grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripTopUx", .vr = PERISTEP_VR_GRIP_TOP_UX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: x-displacement of the held top grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "0"},
+      {.name = "gripTopUy", .vr = PERISTEP_VR_GRIP_TOP_UY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: y-displacement of the held top grip at loadFactor 1 (every step "
+                      "moves it to loadFactor times this)",
+       .unit = "m", .start = "1e-6"},
+
+      // The papers' material constants; a scene reads only its own.
+      {.name = "glassYoungsModulus", .vr = PERISTEP_VR_GLASS_YOUNGS_MODULUS, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Glass-ceramic scene: Young's modulus E1 of the glass phase (000 Table 1), > 0", .unit = "Pa",
+       .start = "80e9", .min = Bound{0, true}},
+      {.name = "crystalYoungsModulus", .vr = PERISTEP_VR_CRYSTAL_YOUNGS_MODULUS, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Glass-ceramic scene: Young's modulus E2 of the crystal phase (000 Table 1), > 0", .unit = "Pa",
+       .start = "133e9", .min = Bound{0, true}},
+      {.name = "glassFractureEnergy", .vr = PERISTEP_VR_GLASS_FRACTURE_ENERGY, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Glass-ceramic scene: fracture energy G1 of the glass phase (000 Table 1), > 0",
+       .unit = "J/m2", .start = "6.59", .min = Bound{0, true}},
+      {.name = "crystalFractureEnergy", .vr = PERISTEP_VR_CRYSTAL_FRACTURE_ENERGY, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Glass-ceramic scene: fracture energy G2 of the crystal phase (000 Table 1), > 0",
+       .unit = "J/m2", .start = "86.35", .min = Bound{0, true}},
+      {.name = "bulkModulus", .vr = PERISTEP_VR_BULK_MODULUS, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Dynamic scenes: bulk modulus K (001 Table 1), > 0; with poissonRatio it gives the Lame "
+                      "constants and E = 3 K (1 - 2 nu)",
+       .unit = "Pa", .start = "25e9", .min = Bound{0, true}},
+      {.name = "criticalEnergyReleaseRate", .vr = PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Dynamic scenes: critical energy release rate G_c (001 Table 1), > 0", .unit = "J/m2",
+       .start = "500", .min = Bound{0, true}},
+      {.name = "density", .vr = PERISTEP_VR_DENSITY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Dynamic scenes: mass density rho (001 Sec. 6), > 0", .unit = "kg/m3", .start = "1200",
+       .min = Bound{0, true}},
   };
 }
 
@@ -291,7 +468,21 @@ const std::vector<EnumerationType>& enumerationTypes() {
          "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
         {"klPlate", PERISTEP_SCENE_KL_PLATE,
          "Plate with a Karhunen-Loeve random Young's modulus (nModes coordinates), stretched by loadFactor; "
-         "quasi-static: the DefaultExperiment fits"}}},
+         "quasi-static: the DefaultExperiment fits"},
+        {"specimen", PERISTEP_SCENE_SPECIMEN,
+         "The importer's specimen: plate Lx x Ly on the vertex grid, material maps materialYoungsModulus, "
+         "materialPoissonRatio, materialFractureEnergy, pre-cracks crackX0..crackY1, grips gripLeft..gripTop "
+         "moved by loadFactor; quasi-static brittle fracture (000 Sec. 3.3), every step breaks bonds until "
+         "equilibrium at its load"}}},
+      {"PeriStep.MaterialField",
+       "What the specimen's Young's modulus map becomes",
+       {{"map", PERISTEP_MATERIAL_MAP, "The map as given"},
+        {"klField", PERISTEP_MATERIAL_KL_FIELD,
+         "The map times E0 (1 + g) or E0 exp(g - var/2) with E0 = 1, g the KL field of xi (fieldTransform)"}}},
+      {"PeriStep.Grip",
+       "How a side of the specimen is loaded",
+       {{"free", PERISTEP_GRIP_FREE, "Traction-free: no collar beside the side"},
+        {"held", PERISTEP_GRIP_HELD, "The collar beside the side moves rigidly by loadFactor * (gripUx, gripUy)"}}},
       {"PeriStep.LinearSolver",
        "Sparse solvers of the (u, theta) system",
        {{"umfpack", PERISTEP_LINEAR_SOLVER_UMFPACK, "UMFPACK, 64-bit indices, METIS ordering"},
@@ -323,12 +514,13 @@ const EnumerationType* findEnumeration(std::string_view name) {
 }
 
 const std::vector<UnitDefinition>& unitDefinitions() {
-  // N/m = kg s^-2 and J/m = kg m s^-2 (per unit thickness of the plane-strain body); K_IC's Pa m^(1/2) =
-  // kg m^(-1/2) s^-2 has no integer powers.
+  // N/m = kg s^-2 and J/m = kg m s^-2 (per unit thickness of the plane-strain body), J/m2 = kg s^-2 (energy
+  // per crack area); K_IC's Pa m^(1/2) = kg m^(-1/2) s^-2 has no integer powers.
   static const std::vector<UnitDefinition> units{
       {.name = "s", .s = 1}, {.name = "m", .m = 1}, {.name = "N/m", .kg = 1, .s = -2},
       {.name = "Pa", .kg = 1, .m = -1, .s = -2},
-      {.name = "J/m", .kg = 1, .m = 1, .s = -2}, {.name = "Pa.m^0.5", .integerPowers = false}};
+      {.name = "J/m", .kg = 1, .m = 1, .s = -2}, {.name = "J/m2", .kg = 1, .s = -2},
+      {.name = "kg/m3", .kg = 1, .m = -3}, {.name = "Pa.m^0.5", .integerPowers = false}};
   return units;
 }
 

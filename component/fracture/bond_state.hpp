@@ -7,12 +7,9 @@
 
 #include "geometry/neighbours.hpp"
 #include "geometry/point_cloud.hpp"
+#include "geometry/segments.hpp"
 
 namespace peristep {
-
-struct Segment {
-  double x0, y0, x1, y1;
-};
 
 struct BondState {
   std::vector<std::uint8_t> intact;     // gamma per CSR entry; bond i->j and j->i always agree

@@ -8,6 +8,12 @@
 
 namespace peristep {
 
+void validateHorizon(double deltaOverH) {
+  require(std::isfinite(deltaOverH) && deltaOverH >= 1.0,
+          "horizon smaller than the grid spacing: deltaOverH must be >= 1 (got " + std::to_string(deltaOverH) + ")");
+  require(deltaOverH <= 20.0, "deltaOverH must be <= 20 (got " + std::to_string(deltaOverH) + ")");
+}
+
 void validate(const GridSpec& s) {
   require(s.nx >= 2 && s.ny >= 2, "empty domain: nx and ny must both be at least 2 (got nx = " +
                                       std::to_string(s.nx) + ", ny = " + std::to_string(s.ny) + ")");
@@ -16,9 +22,7 @@ void validate(const GridSpec& s) {
   const double hx = s.Lx / static_cast<double>(s.nx - 1), hy = s.Ly / static_cast<double>(s.ny - 1);
   require(std::abs(hx - hy) <= 1e-9 * hx, "grid spacing must be uniform: Lx/(nx-1) = " + std::to_string(hx) +
                                               " but Ly/(ny-1) = " + std::to_string(hy));
-  require(std::isfinite(s.deltaOverH) && s.deltaOverH >= 1.0,
-          "horizon smaller than the grid spacing: deltaOverH must be >= 1 (got " + std::to_string(s.deltaOverH) + ")");
-  require(s.deltaOverH <= 20.0, "deltaOverH must be <= 20 (got " + std::to_string(s.deltaOverH) + ")");
+  validateHorizon(s.deltaOverH);
   require(std::isfinite(s.jitter) && s.jitter >= 0.0 && s.jitter < 0.5,
           "jitter must lie in [0, 0.5) grid spacings (got " + std::to_string(s.jitter) + ")");
   const double points = static_cast<double>(s.nx) * static_cast<double>(s.ny);

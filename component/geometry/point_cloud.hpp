@@ -28,6 +28,9 @@ struct GridSpec {
 
 // Throws InvalidInput with a precise message when the spec cannot describe a valid cloud.
 void validate(const GridSpec& spec);
+// The range of deltaOverH, for every grid: 1 <= delta/h <= 20 (the collar is 2 delta wide: an unbounded
+// horizon would overflow the point count). Throws InvalidInput.
+void validateHorizon(double deltaOverH);
 
 // Where a point sits: in the domain (unknown u), in the Dirichlet collar (prescribed u), or in the
 // collar beyond a free edge (no material: its bonds are broken from the start, 000 Sec. 3.3).

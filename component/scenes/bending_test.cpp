@@ -28,8 +28,7 @@ DynamicScene makeBendingTest(const BendingSpec& s) {
   for (const double x : s.cracks == 1 ? std::vector<double>{mid} : std::vector<double>{mid - s.crackOffset, mid + s.crackOffset})
     scene.cracks.push_back(Segment{x, -h, x, s.crackLength});
 
-  StateBasedInput in;
-  in.poissonRatio = s.poissonRatio;  // 0.25 in 001 Sec. 6.2
+  const StateBasedInput& in = s.material;
   StateBasedBondOptions bo;
   bo.horizon = eps;
   bo.cuts = scene.cracks;

@@ -13,6 +13,7 @@
 //    the band is the top rows of nodes covering d (at least one row) and b is scaled by d over their
 //    depth, so that the resultant load per unit thickness does not depend on the resolution;
 //  - nu = 0.25 (Table 1), eps = 0.75 mm, h = 0.25 mm, dt = 0.0035 us to T = 350 us in 001.
+#include "models/state_based_material.hpp"
 #include "scenes/dynamic_scene.hpp"
 
 namespace peristep {
@@ -28,7 +29,7 @@ struct BendingSpec {
   double loadDepth = 0.75e-3;     // d [m]
   double loadRate = -2.5e14;      // f_max [N/(m^3 s)]
   double timeStep = 0.0035e-6, endTime = 350e-6;  // [s]
-  double poissonRatio = 0.25;     // Table 1
+  StateBasedInput material;       // 001 Table 1 (nu = 0.25 in Sec. 6.2)
 };
 
 DynamicScene makeBendingTest(const BendingSpec& spec);

@@ -52,7 +52,8 @@ GlassCeramicSpec specimenSpec(const SceneParameters& p, const PcaModes* pca) {
   s.crystalFraction = p.crystalFraction;
   s.seed = p.grid.seed;
   s.linearSolver = p.linearSolver;
-  s.phases.nu = p.poissonRatio;
+  s.phases = {p.glassYoungsModulus, p.crystalYoungsModulus, p.glassFractureEnergy, p.crystalFractureEnergy,
+              p.poissonRatio};
   if (pca) {
     // The truncated expansion 000:(5.5) is not confined to [0, 1]: with G2/G1 = 13 a point at R < -0.09
     // would get a negative fracture energy. R is a crystal indicator (a local volume fraction), so it is

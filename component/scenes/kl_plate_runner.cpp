@@ -3,12 +3,11 @@
 // (dimensionless, as Tests 1-3). The collar imposes a uniaxial stretch u = loadFactor (0, 0.01 y); no
 // body force. Linear: one factorization per sample, one solve per load step.
 #include <cmath>
-#include <mutex>
 #include <unordered_map>
 
 #include "core/byte_stream.hpp"
-#include "random/kl_field.hpp"
 #include "scenes/elastic_scene.hpp"
+#include "scenes/kl_material.hpp"
 #include "scenes/scene_runner.hpp"
 #include "solvers/static_lps.hpp"
 
@@ -41,42 +40,14 @@ class KlPlateScene final : public ElasticScene {
   std::unordered_map<std::pair<double, double>, std::size_t, Hash> index_;
 };
 
-KlSpec klSpec(const SceneParameters& p) {
-  KlSpec s;
-  s.kind = p.covariance == Covariance::Gaussian ? CovarianceKind::Gaussian : CovarianceKind::Exponential;
-  s.correlationLength = p.correlationLength;
-  s.standardDeviation = p.fieldStd;
-  s.modes = p.xi.size();
-  return s;
-}
-
-// The modes of the last field asked for: the samples of one study share them.
-std::shared_ptr<const KlField> sharedKlField(const PointCloud& c, const GridSpec& grid, const KlSpec& spec) {
-  static std::mutex mutex;
-  static GridSpec lastGrid;
-  static KlSpec lastSpec;
-  static std::shared_ptr<const KlField> last;
-  std::lock_guard lock(mutex);
-  const bool same = last && lastGrid.sameCloud(grid) && lastSpec.kind == spec.kind &&
-                    lastSpec.correlationLength == spec.correlationLength &&
-                    lastSpec.standardDeviation == spec.standardDeviation && lastSpec.modes == spec.modes;
-  if (!same) {
-    last = std::make_shared<const KlField>(c.x, c.y, c.h, spec);
-    lastGrid = grid;
-    lastSpec = spec;
-  }
-  return last;
-}
-
 class KlPlateRunner final : public Runner {
  public:
   explicit KlPlateRunner(const SceneParameters& p) {
     auto disc = sharedDiscretization(p.grid);
     const PointCloud& c = disc->cloud;
-    const std::shared_ptr<const KlField> field = sharedKlField(c, p.grid, klSpec(p));
+    const std::shared_ptr<const KlField> field = sharedKlField(c, p);
     retained_ = field->retainedVarianceFraction();
-    std::vector<double> E = field->materialField(
-        kMeanModulus, p.xi, p.transform == FieldTransform::Exponential ? MaterialTransform::Positive : MaterialTransform::Affine);
+    std::vector<double> E = klMaterial(*field, kMeanModulus, p);
     for (std::size_t q : c.domain) domainE_.push_back(E[q]);
     scene_ = std::make_unique<KlPlateScene>(c, std::move(E), p.poissonRatio);
     lps_ = std::make_unique<StaticLps>(disc, *scene_, p.linearSolver);

@@ -28,8 +28,7 @@ DynamicScene makePlexiglassCrack(const PlexiglassCrackSpec& s) {
   const double xc = 0.5 * L, tol = 1e-9 * h;
   scene.cracks = {Segment{xc, -eps - h, xc, s.crackLength}};
 
-  StateBasedInput in;
-  in.poissonRatio = s.poissonRatio;
+  const StateBasedInput& in = s.material;
   StateBasedBondOptions bo;
   bo.horizon = eps;
   bo.cuts = scene.cracks;

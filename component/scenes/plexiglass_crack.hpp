@@ -18,7 +18,8 @@ namespace peristep {
 struct PlexiglassCrackSpec {
   double horizon = 0.008;        // eps [m]
   double meshRatio = 4;          // eps/h (2, 4, 8 in 001 Sec. 6.1.2)
-  double poissonRatio = 0.25;    // 0.22 switches the hydrostatic force on (Table 1, column "0.245")
+  // 001 Table 1: K, G_c, rho, nu = 0.25 (nu = 0.22 switches the hydrostatic force on: column "0.245").
+  StateBasedInput material;
   double side = 0.1;             // L [m]
   double crackLength = 0.02;     // [m]
   double pullVelocity = 1.0;     // [m/s]

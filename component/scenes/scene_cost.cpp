@@ -125,7 +125,7 @@ CostEstimate estimateSetUp(const SceneParameters& p) {
     parts.push_back(lpsSetUp(p.grid));
     if (p.scene == SceneId::GlassCeramic)
       parts.push_back(p.pcaRealizations > 0 ? pca(p) : microstructure(p, 1));
-    if (p.scene == SceneId::KlPlate) parts.push_back(klField(p));
+    if (usesKlField(p)) parts.push_back(klField(p));
   }
   CostEstimate e;
   const Part *memory = &parts.front(), *time = &parts.front();

@@ -20,6 +20,7 @@ std::size_t randomCoordinates(const SceneParameters& p) {
     case SceneId::InterfaceCrack: return 2;
     case SceneId::GlassCeramic: return p.pcaRealizations > 0 ? p.xi.size() : 0;
     case SceneId::KlPlate: return p.xi.size();
+    case SceneId::Specimen: return p.specimen.randomField ? p.xi.size() : 0;
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches: return 0;
@@ -32,6 +33,10 @@ bool isDynamic(SceneId scene) {
          scene == SceneId::BendingTwoNotches;
 }
 
+bool usesKlField(const SceneParameters& p) {
+  return p.scene == SceneId::KlPlate || (p.scene == SceneId::Specimen && p.specimen.randomField);
+}
+
 XiDistribution xiDistribution(const SceneParameters& p, std::size_t k) {
   if (k >= randomCoordinates(p)) return XiDistribution::Unused;
   return p.scene == SceneId::InterfaceCrack && k == 1 ? XiDistribution::Uniform : XiDistribution::Normal;
@@ -41,10 +46,13 @@ double xiScale(SceneId scene, std::size_t) { return scene == SceneId::Smooth ? 0
 
 void validate(const SceneParameters& p) {
   require(p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack ||
-              p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || isDynamic(p.scene),
+              p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || p.scene == SceneId::Specimen ||
+              isDynamic(p.scene),
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p.scene))
     validateDynamicScene(p);  // cell-centred lattices: h = Lx/nx, not Lx/(nx-1)
+  else if (p.scene == SceneId::Specimen)
+    validate(p.specimen, p.grid);
   else
     validate(p.grid);
   validateElastic(1.0, p.poissonRatio);
@@ -55,7 +63,7 @@ void validate(const SceneParameters& p) {
   const std::size_t needed = randomCoordinates(p);
   require(p.xi.size() >= needed, "scene needs " + std::to_string(needed) + " random coordinates but nModes = " +
                                      std::to_string(p.xi.size()));
-  if (p.scene == SceneId::KlPlate) {
+  if (usesKlField(p)) {
     require(std::isfinite(p.correlationLength) && p.correlationLength > 0,
             "correlationLength must be positive and finite (got " + std::to_string(p.correlationLength) + ")");
     require(std::isfinite(p.fieldStd) && p.fieldStd > 0,
@@ -102,6 +110,7 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
     case SceneId::InterfaceCrack: return makeInterfaceCrackRunner(p);
     case SceneId::GlassCeramic: return makeGlassCeramicRunner(p);
     case SceneId::KlPlate: return makeKlPlateRunner(p);
+    case SceneId::Specimen: return makeSpecimenRunner(p);
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches: return makeDynamicRunner(p);
@@ -175,6 +184,7 @@ double SceneModel::crackLength() const { return impl_->runner->crackLength(); }
 double SceneModel::brokenBonds() const { return impl_->runner->brokenBonds(); }
 double SceneModel::fractureEnergy() const { return impl_->runner->fractureEnergy(); }
 double SceneModel::toughnessKIC() const { return impl_->runner->toughnessKIC(); }
+std::array<double, 2> SceneModel::gripReaction(Side side) const { return impl_->runner->gripReaction(side); }
 double SceneModel::strainEnergy() const { return impl_->runner->strainEnergy(); }
 double SceneModel::kineticEnergy() const { return impl_->runner->kineticEnergy(); }
 double SceneModel::externalWork() const { return impl_->runner->externalWork(); }

@@ -2,6 +2,7 @@
 // A built-in scene assembled from plain parameters: the one object the FMI layer drives.
 // It hides every numerical detail (geometry, quadrature, model, solver) behind set-up, advance and
 // read-out, and throws InvalidInput / SolverFailure with a precise message; it never terminates.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -10,6 +11,8 @@
 
 #include "core/progress.hpp"
 #include "geometry/point_cloud.hpp"
+#include "scenes/specimen.hpp"
+#include "solvers/time_integrator_kind.hpp"
 
 namespace peristep {
 
@@ -22,6 +25,7 @@ enum class SceneId : std::int64_t {
   BendingOneNotch = 6,    // 001 Sec. 6.2: dynamic three-point bending, one pre-crack
   BendingTwoNotches = 7,  // 001 Sec. 6.2: the same with two pre-cracks
   KlPlate = 8,         // plate whose Young's modulus is a Karhunen-Loeve random field (000 Sec. 2.2)
+  Specimen = 9,        // the importer's plate: material maps, pre-cracks, grips (scenes/specimen.hpp)
 };
 
 // Law of a standardized coordinate; Unused: the scene ignores that entry of xi.
@@ -54,17 +58,26 @@ struct SceneParameters {
   double correlationLength = 0.5;   // l [m]
   double fieldStd = 0.3;            // s
   FieldTransform transform = FieldTransform::Affine;
-  // Dynamic scenes (5-7): the time integrator by name (solvers/time_integrator.hpp), the central
-  // difference step (0: the scene's step from 001) and the SUNDIALS relative tolerance.
-  std::string timeIntegrator = "central_difference";
+  // Dynamic scenes (5-7): the time integrator (solvers/time_integrator.hpp), the central difference step
+  // (0: the scene's step from 001) and the SUNDIALS relative tolerance.
+  TimeIntegratorKind timeIntegrator = TimeIntegratorKind::CentralDifference;
   double internalTimeStep = 0;      // [s]
   double integratorTolerance = 1e-6;
+  // The papers' material constants; every scene's Poisson ratio is poissonRatio.
+  double glassYoungsModulus = 80e9, crystalYoungsModulus = 133e9;   // GlassCeramic: E1, E2 [Pa] (000 Table 1)
+  double glassFractureEnergy = 6.59, crystalFractureEnergy = 86.35;  // GlassCeramic: G1, G2 [J/m^2]
+  double bulkModulus = 25e9;               // dynamic scenes: K [Pa] (001 Table 1)
+  double criticalEnergyReleaseRate = 500;  // dynamic scenes: G_c [J/m^2]
+  double density = 1200;                   // dynamic scenes: rho [kg/m^3]
+  SpecimenSpec specimen;                   // Specimen: material maps, pre-cracks, grips
   WorkLimits limits;
   ProgressHook progress;            // optional: told how far long set-ups and steps have come
 };
 
 // Scenes 5-7 integrate the equation of motion in time; the others are quasi-static.
 bool isDynamic(SceneId scene);
+// The KL plate and a specimen with a random field draw a Karhunen-Loeve field from xi.
+bool usesKlField(const SceneParameters& p);
 
 // What drives a step: the manufactured scenes and Test 3 scale their boundary data by loadFactor; the
 // glass-ceramic plate is opened by loadDisplacement (top collar +U_D, bottom collar -U_D).
@@ -131,6 +144,8 @@ class SceneModel {
   double brokenBonds() const;
   double fractureEnergy() const;
   double toughnessKIC() const;
+  // Specimen scene: (x, y) force of a held grip's collar on the specimen [N/m]; 0 for a free one.
+  std::array<double, 2> gripReaction(Side side) const;
   // Dynamic scenes (0 otherwise), per unit thickness: elastic energy PD(u) 001:(11), kinetic energy,
   // work of the loads since the start; and the force evaluations the integrator has spent.
   double strainEnergy() const;

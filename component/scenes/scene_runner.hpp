@@ -1,6 +1,7 @@
 #pragma once
 // One built-in scene behind a common face: SceneModel owns a Runner and keeps the fields the FMI layer
 // reads. Each scene family lives in its own *_runner.cpp and is made by the factory declared here.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -8,6 +9,7 @@
 
 #include "geometry/point_cloud.hpp"
 #include "scenes/scene_model.hpp"
+#include "scenes/specimen.hpp"
 
 namespace peristep {
 
@@ -27,6 +29,7 @@ class Runner {
   virtual double brokenBonds() const { return 0.0; }
   virtual double fractureEnergy() const { return 0.0; }
   virtual double toughnessKIC() const { return 0.0; }
+  virtual std::array<double, 2> gripReaction(Side) const { return {0.0, 0.0}; }  // specimen scene
   // Scales of the standardized coordinates when they come from the field itself (PCA); empty: the
   // fixed parametrization xiScale(scene, k).
   virtual std::vector<double> xiScales() const { return {}; }
@@ -46,6 +49,7 @@ std::unique_ptr<Runner> makeInterfaceCrackRunner(const SceneParameters& p);  // 
 std::unique_ptr<Runner> makeGlassCeramicRunner(const SceneParameters& p);    // 000 Sec. 5
 std::unique_ptr<Runner> makeKlPlateRunner(const SceneParameters& p);         // KL random modulus
 std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (scenes 5-7)
+std::unique_ptr<Runner> makeSpecimenRunner(const SceneParameters& p);        // the importer's specimen
 // The dynamic scenes' own checks (cell-centred lattice, integrator options); throws InvalidInput.
 void validateDynamicScene(const SceneParameters& p);
 

@@ -9,14 +9,28 @@ namespace peristep {
 
 std::vector<std::string> timeIntegratorNames() { return {"central_difference", "arkode_erk", "cvode_bdf"}; }
 
-std::unique_ptr<TimeIntegrator> makeTimeIntegrator(std::string_view name, DynamicProblem& problem,
-                                                   const IntegratorOptions& options) {
-  if (name == "central_difference") return std::make_unique<CentralDifference>(problem, options);
-  if (name == "arkode_erk") return makeArkodeExplicit(problem, options);
-  if (name == "cvode_bdf") return makeCvodeImplicit(problem, options);
+TimeIntegratorKind timeIntegratorKind(std::string_view name) {
+  if (name == "central_difference") return TimeIntegratorKind::CentralDifference;
+  if (name == "arkode_erk") return TimeIntegratorKind::ArkodeErk;
+  if (name == "cvode_bdf") return TimeIntegratorKind::CvodeBdf;
   std::string known;
   for (const std::string& n : timeIntegratorNames()) known += (known.empty() ? "" : ", ") + n;
   throw InvalidInput("unknown time integrator '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::unique_ptr<TimeIntegrator> makeTimeIntegrator(TimeIntegratorKind kind, DynamicProblem& problem,
+                                                   const IntegratorOptions& options) {
+  switch (kind) {
+    case TimeIntegratorKind::CentralDifference: return std::make_unique<CentralDifference>(problem, options);
+    case TimeIntegratorKind::ArkodeErk: return makeArkodeExplicit(problem, options);
+    case TimeIntegratorKind::CvodeBdf: return makeCvodeImplicit(problem, options);
+  }
+  throw InvalidInput("unknown time integrator " + std::to_string(static_cast<int>(kind)));
+}
+
+std::unique_ptr<TimeIntegrator> makeTimeIntegrator(std::string_view name, DynamicProblem& problem,
+                                                   const IntegratorOptions& options) {
+  return makeTimeIntegrator(timeIntegratorKind(name), problem, options);
 }
 
 }  // namespace peristep

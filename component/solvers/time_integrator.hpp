@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "solvers/dynamic_problem.hpp"
+#include "solvers/time_integrator_kind.hpp"
 
 namespace peristep {
 
@@ -68,7 +69,12 @@ class TimeIntegrator {
 };
 
 std::vector<std::string> timeIntegratorNames();
-// Throws InvalidInput for an unknown name (the message lists the known ones) or invalid options.
+// The kind a name above stands for (command lines of the benches and tests); throws InvalidInput for an
+// unknown name, listing the known ones.
+TimeIntegratorKind timeIntegratorKind(std::string_view name);
+// Throws InvalidInput for invalid options (a step above the stability limit).
+std::unique_ptr<TimeIntegrator> makeTimeIntegrator(TimeIntegratorKind kind, DynamicProblem& problem,
+                                                   const IntegratorOptions& options);
 std::unique_ptr<TimeIntegrator> makeTimeIntegrator(std::string_view name, DynamicProblem& problem,
                                                    const IntegratorOptions& options);
 

@@ -14,31 +14,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "example_support.h"
 #include "fmi3FunctionTypes.h"
 #include "peristep.h"
 
 enum { NX = 17, NY = 17 };
-
-/* The component reports problems through this callback: print them. */
-static void logMessage(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category, fmi3String message) {
-  (void)env;
-  fprintf(stderr, "PeriStep [%s, status %d]: %s\n", category, (int)status, message);
-}
-
-/* dlsym returns void*; POSIX allows reading it into a function pointer through its address. */
-#define LOOKUP(name)                                            \
-  name##TYPE* name;                                             \
-  *(void**)(&name) = dlsym(library, #name);                     \
-  if (!name) {                                                  \
-    fprintf(stderr, "embed: %s is not exported\n", #name);      \
-    return 1;                                                   \
-  }
-
-#define CHECK(call)                                             \
-  if ((call) != fmi3OK) {                                       \
-    fprintf(stderr, "embed: %s failed\n", #call);               \
-    return 1;                                                   \
-  }
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -1,0 +1,81 @@
+#include "scenes/specimen.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/errors.hpp"
+
+namespace peristep {
+
+namespace {
+
+std::string text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+// Whether the map has material somewhere along a side's edge row or column.
+bool materialAlong(const std::vector<double>& E, const GridSpec& g, Side side) {
+  for (std::size_t k = 0; k < (side == Side::Left || side == Side::Right ? g.ny : g.nx); ++k) {
+    const std::size_t i = side == Side::Left ? 0 : side == Side::Right ? g.nx - 1 : k;
+    const std::size_t j = side == Side::Bottom ? 0 : side == Side::Top ? g.ny - 1 : k;
+    if (E[j * g.nx + i] > 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void validate(const SpecimenSpec& s, const GridSpec& g) {
+  validate(g);
+  const std::size_t n = g.nx * g.ny;
+  const auto length = [&](const std::vector<double>& map, const char* name) {
+    require(map.size() == n, std::string(name) + " has " + std::to_string(map.size()) + " values for the " +
+                                 std::to_string(g.ny) + " x " + std::to_string(g.nx) + " grid (ny x nx = " +
+                                 std::to_string(n) + ")");
+  };
+  length(s.youngsModulus, "materialYoungsModulus");
+  length(s.poissonRatio, "materialPoissonRatio");
+  length(s.fractureEnergy, "materialFractureEnergy");
+  bool anyMaterial = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string at = "[" + std::to_string(i) + "] (x, y index " + std::to_string(i % g.nx) + ", " +
+                           std::to_string(i / g.nx) + ")";
+    require(std::isfinite(s.youngsModulus[i]) && s.youngsModulus[i] >= 0,
+            "materialYoungsModulus" + at + " must be >= 0 (0: Void), got " + text(s.youngsModulus[i]));
+    require(std::isfinite(s.fractureEnergy[i]) && s.fractureEnergy[i] > 0,
+            "materialFractureEnergy" + at + " must be positive, got " + text(s.fractureEnergy[i]));
+    require(std::isfinite(s.poissonRatio[i]) && s.poissonRatio[i] > -1 && s.poissonRatio[i] < 0.5,
+            "materialPoissonRatio" + at + " must lie in (-1, 0.5), got " + text(s.poissonRatio[i]));
+    anyMaterial = anyMaterial || s.youngsModulus[i] > 0;
+  }
+  require(anyMaterial, "materialYoungsModulus is 0 (Void) everywhere: the specimen has no material");
+  require(g.delta() < std::min(g.Lx, g.Ly),
+          "the horizon deltaOverH * h = " + text(g.delta()) + " m is not smaller than the plate (Lx = " + text(g.Lx) +
+              " m, Ly = " + text(g.Ly) + " m): use a smaller deltaOverH or a finer grid");
+  const double X = 0.5 * g.Lx, Y = 0.5 * g.Ly;
+  for (std::size_t k = 0; k < s.cracks.size(); ++k) {
+    const Segment& c = s.cracks[k];
+    const auto inside = [&](double x, double y) { return std::abs(x) <= X && std::abs(y) <= Y; };
+    require(std::isfinite(c.x0) && std::isfinite(c.y0) && std::isfinite(c.x1) && std::isfinite(c.y1) &&
+                inside(c.x0, c.y0) && inside(c.x1, c.y1),
+            "pre-crack " + std::to_string(k) + " from (" + text(c.x0) + ", " + text(c.y0) + ") to (" + text(c.x1) +
+                ", " + text(c.y1) + ") m leaves the plate [" + text(-X) + ", " + text(X) + "] x [" + text(-Y) +
+                ", " + text(Y) + "] m");
+  }
+  bool anyHeld = false;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const Grip& grip = s.grips[k];
+    if (!grip.held) continue;
+    anyHeld = true;
+    const std::string name = std::string("the ") + kSideNames[k] + " grip";
+    require(std::isfinite(grip.ux) && std::isfinite(grip.uy), name + " needs a finite displacement");
+    require(materialAlong(s.youngsModulus, g, static_cast<Side>(k)),
+            name + " holds a side along which materialYoungsModulus is 0 (Void): it would hold nothing");
+  }
+  require(anyHeld, "every grip is free: hold at least one side, or the specimen floats");
+}
+
+}  // namespace peristep
