@@ -4,7 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config patchelf libeigen3-dev libsundials-dev libhdf5-dev zlib1g-dev libxml2-dev catch2
-          libopenblas-dev libsuitesparse-dev libmumps-seq-dev libzip-dev libtomlplusplus-dev libcli11-dev libpng-dev
+          libopenblas-dev libsuitesparse-dev libmumps-seq-dev libmetis-dev libzip-dev libtomlplusplus-dev libcli11-dev libpng-dev
           python3 python3-numpy gnuplot-nox libopenmpi-dev openmpi-bin python3-paraview python3-h5py)
 missing=()
 for p in "${packages[@]}"; do

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "solvers/metis_ordering.hpp"
 
 namespace peristep {
 namespace {
@@ -115,10 +116,39 @@ void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> cor
   for (std::int64_t r = 0; r < A.rows; ++r)
     for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
       scaled_.value[k] *= scale_[static_cast<std::size_t>(r)] * scale_[static_cast<std::size_t>(A.col[k])];
-  sparse_.factorize(scaled_, zone_);
+  sparse_.factorize(scaled_, zone_, pivotOrder());
   dense_.reset(sparse_.schurComplement());
   reduced_.resize(zone_.size());
   xZone_.resize(zone_.size());
+}
+
+std::vector<std::int32_t> CrackZoneSolver::pivotOrder() const {
+  // Nested dissection of the points outside the zone (their unknowns together), then the zone.
+  const std::size_t n = dofs_.u.size();
+  std::vector<std::int32_t> vertex(n, -1);
+  std::vector<std::size_t> points;
+  for (std::size_t p = 0; p < n; ++p) {
+    bool outside = false;
+    forRows(p, [&](std::int64_t r) { outside = outside || zoneIndex_[static_cast<std::size_t>(r)] < 0; });
+    if (!outside) continue;
+    vertex[p] = static_cast<std::int32_t>(points.size());
+    points.push_back(p);
+  }
+  std::vector<std::int32_t> xadj{0}, adjacency;
+  for (std::size_t p : points) {
+    for (std::size_t k = nb_.begin(p); k < nb_.end(p); ++k)
+      if (vertex[nb_.index[k]] >= 0) adjacency.push_back(vertex[nb_.index[k]]);
+    xadj.push_back(static_cast<std::int32_t>(adjacency.size()));
+  }
+  const std::vector<std::int32_t> rank = nestedDissection(std::move(xadj), std::move(adjacency));
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t v = 0; v < points.size(); ++v) order[static_cast<std::size_t>(rank[v])] = points[v];
+  std::vector<std::int32_t> position(static_cast<std::size_t>(dofs_.size), -1);
+  std::int32_t next = 0;
+  for (std::size_t p : order) forRows(p, [&](std::int64_t r) { position[static_cast<std::size_t>(r)] = next++; });
+  for (std::int64_t r : zone_) position[static_cast<std::size_t>(r)] = next++;
+  require(next == static_cast<std::int32_t>(dofs_.size), "crack zone: ordering misses unknowns");
+  return position;
 }
 
 bool CrackZoneSolver::rowChange(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,

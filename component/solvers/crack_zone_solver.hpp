@@ -58,6 +58,7 @@ class CrackZoneSolver {
   void solveOnce(std::span<const double> b, std::span<double> x);
   void solveScaled(std::span<const double> b, std::span<double> y);
   std::vector<std::int64_t> zoneUnknowns(const std::vector<std::size_t>& corePoints) const;
+  std::vector<std::int32_t> pivotOrder() const;
   // The change (A - factored) of zone row `row` on its columns; false when the row is unchanged.
   bool rowChange(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
                  std::vector<double>& change) const;

@@ -20,9 +20,11 @@ class SchurFactorization {
   SchurFactorization& operator=(const SchurFactorization&) = delete;
 
   // Factorizes A (square, its pattern fixed for the lifetime of this object) with `schurUnknowns`
-  // (ascending, possibly empty) eliminated last. A must stay alive and unchanged until the next call.
-  // The ordering is recomputed only when the set changes.
-  void factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns);
+  // (ascending, possibly empty) eliminated last, in the order `position` (the pivot position of each
+  // unknown, the Schur unknowns last). A must stay alive and unchanged until the next call. The analysis
+  // is repeated only when the set or the order changes.
+  void factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
+                 const std::vector<std::int32_t>& position);
 
   const std::vector<std::int64_t>& schurUnknowns() const { return schurUnknowns_; }
   // S, column-major, size |Z| x |Z|.
@@ -43,7 +45,7 @@ class SchurFactorization {
   std::unique_ptr<Mumps> mumps_;
   std::vector<int> rowIndex_, colIndex_;  // 1-based coordinates of A's entries
   std::vector<std::int64_t> schurUnknowns_;
-  std::vector<int> schurList_;  // 1-based, for MUMPS
+  std::vector<int> schurList_, position_;  // 1-based, for MUMPS
   std::vector<double> schur_, rhs_;
   bool analyzed_ = false;
 };

@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "solvers/linear_solver.hpp"
+#include "solvers/metis_ordering.hpp"
 
 namespace peristep {
 namespace {
@@ -28,10 +29,7 @@ class UmfpackSolver final : public LinearSolver {
 
   void analyze(const CsrMatrix& A) override {
     release();
-    // METIS keeps its random-number state per process: two instances ordering at the same time race
-    // and get different (equally valid) orderings, so concurrent instances would not repeat each other.
-    static std::mutex metisMutex;
-    std::unique_lock lock(metisMutex, std::defer_lock);
+    std::unique_lock lock(metisMutex(), std::defer_lock);  // UMFPACK calls METIS
     if (metis_) lock.lock();
     check(umfpack_dl_symbolic(A.rows, A.cols, A.rowStart.data(), A.col.data(), A.value.data(), &symbolic_,
                               control_, info_),
