@@ -7,6 +7,9 @@
 #include <random>
 
 #include "learning/kernel_fit.hpp"
+#include "learning/learned_lps_force_model.hpp"
+#include "solvers/dynamic_problem.hpp"
+#include "solvers/stability_limit.hpp"
 #include "learning_support.hpp"
 
 using namespace peristep::learning;
@@ -110,4 +113,23 @@ TEST_CASE("with 1% noise on b the 95% intervals cover the truth in at least 18 o
   CHECK(coverMu >= 18);
   CHECK(coverAlpha >= 18);
   WARN("covered of 20: lambda " << coverLambda << ", mu " << coverMu << ", alpha " << coverAlpha << ", all D_k " << coverD);
+}
+
+TEST_CASE("the stability code's limit for a learned kernel matches the Fourier symbol's largest frequency",
+          "[learning]") {
+  const Truth t = syntheticTruth(kDelta);
+  const LatticeStencil st = makeLatticeStencil(5.0, 5.0, kDelta);
+  LearnedLpsForceModel model(kLattice, st, t.kernel, t.lambda, t.mu, 1.0);
+  const double rho = 2.0;
+  peristep::DynamicProblem problem(model, rho);
+  const peristep::StabilityEstimate s = peristep::estimateStabilityLimit(problem);
+  const Solvability sym = checkSolvability(kLattice, st, t.kernel, t.lambda, t.mu);
+  const double exact = 2.0 / std::sqrt(sym.maxEigen / rho);
+  INFO("Lanczos " << s.criticalStep << " (" << s.iterations << " iterations), symbol " << exact);
+  // The estimate errs on the safe side (shorter step), by little.
+  CHECK(s.criticalStep <= exact * (1 + 1e-9));
+  CHECK(s.criticalStep > 0.95 * exact);
+  // The tangent is the operator itself: symmetric for a symmetric stencil.
+  const Eigen::SparseMatrix<double> T = model.tangent(nullptr);
+  CHECK((Eigen::MatrixXd(T) - Eigen::MatrixXd(T).transpose()).cwiseAbs().maxCoeff() < 1e-12 * T.coeffs().cwiseAbs().maxCoeff());
 }
