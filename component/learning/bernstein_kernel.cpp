@@ -8,11 +8,8 @@
 namespace peristep::learning {
 
 namespace {
-double binomial(int n, int k) {
-  double c = 1.0;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
-  return c;
-}
+// C(n, k) = 1 / ((n + 1) B(k + 1, n - k + 1)).
+double binomial(int n, int k) { return 1.0 / ((n + 1) * std::beta(k + 1.0, n - k + 1.0)); }
 }  // namespace
 
 double bernstein(int k, int P, double s) {

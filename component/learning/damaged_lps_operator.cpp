@@ -41,6 +41,26 @@ DamagedLpsOperator::DamagedLpsOperator(CoarseGrid grid, LatticeStencil stencil, 
   neighbour_ = gridNeighbours(grid_, stencil_);
 }
 
+std::vector<double> DamagedLpsOperator::slit(double ax, double ay, double bx, double by) const {
+  const std::size_t S = stencil_.size();
+  std::vector<double> smax(neighbour_.size(), -INFINITY);
+  const auto side = [](double px, double py, double qx, double qy, double rx, double ry) {
+    return (qx - px) * (ry - py) - (qy - py) * (rx - px);
+  };
+  for (std::size_t p = 0; p < grid_.size(); ++p)
+    for (std::size_t s = 0; s < S; ++s) {
+      const std::ptrdiff_t q = neighbour_[p * S + s];
+      if (q < 0) continue;
+      const double px = grid_.x(p), py = grid_.y(p), qx = grid_.x(static_cast<std::size_t>(q)),
+                   qy = grid_.y(static_cast<std::size_t>(q));
+      // Proper intersection of the bond p-q with the slit a-b.
+      if (side(ax, ay, bx, by, px, py) * side(ax, ay, bx, by, qx, qy) < 0 &&
+          side(px, py, qx, qy, ax, ay) * side(px, py, qx, qy, bx, by) < 0)
+        smax[p * S + s] = INFINITY;
+    }
+  return smax;
+}
+
 void DamagedLpsOperator::updateMaxStretch(const std::vector<double>& u, std::vector<double>& smax) const {
   const std::size_t S = stencil_.size();
   smax.resize(neighbour_.size(), -INFINITY);

@@ -20,6 +20,9 @@ class DamagedLpsOperator {
   std::vector<double> apply(const std::vector<double>& u, const std::vector<double>& maxStretch, double s0) const;
   // Stretch of every bond (003:(23)) in u, combined into `maxStretch` by a running maximum.
   void updateMaxStretch(const std::vector<double>& u, std::vector<double>& maxStretch) const;
+  // Largest stretches to start from: +infinity (broken for every s0) on the bonds that cross the segment
+  // (ax, ay)-(bx, by), a pre-existing slit; -infinity elsewhere.
+  std::vector<double> slit(double ax, double ay, double bx, double by) const;
   std::size_t bonds() const { return neighbour_.size(); }
   const CoarseGrid& grid() const { return grid_; }
 

@@ -8,7 +8,7 @@
 namespace peristep::learning {
 
 FractureResidual::FractureResidual(FractureFrames data, DamagedLpsOperator op, std::size_t first, std::size_t last,
-                                   double margin)
+                                   double margin, std::vector<double> initialStretch)
     : data_(std::move(data)), op_(std::move(op)), first_(first), last_(last) {
   const CoarseGrid& g = data_.grid;
   require(first >= 1 && last + 1 < data_.u.size() && first <= last, "fracture residual: frames out of range");
@@ -20,7 +20,7 @@ FractureResidual::FractureResidual(FractureFrames data, DamagedLpsOperator op, s
         g.y(p) <= yhi - margin + 1e-9)
       rows_.push_back(p);
   require(!rows_.empty(), "fracture residual: no point lies the margin inside the grid");
-  std::vector<double> smax;
+  std::vector<double> smax = std::move(initialStretch);
   for (const std::vector<double>& u : data_.u) {
     op_.updateMaxStretch(u, smax);
     maxStretch_.push_back(smax);

@@ -20,8 +20,10 @@ struct FractureFrames {
 class FractureResidual {
  public:
   // Residual rows: points whose horizon lies inside the grid by `margin` (003 Sec. 5.1 uses 2 delta), frames
-  // first..last (central differences 003:(21) need first >= 1 and last + 1 < frames).
-  FractureResidual(FractureFrames data, DamagedLpsOperator op, std::size_t first, std::size_t last, double margin);
+  // first..last (central differences 003:(21) need first >= 1 and last + 1 < frames). initialStretch: the
+  // largest stretches before frame 0 (e.g. DamagedLpsOperator::slit), empty for none.
+  FractureResidual(FractureFrames data, DamagedLpsOperator op, std::size_t first, std::size_t last, double margin,
+                   std::vector<double> initialStretch = {});
   // sum over frames and rows of |rho u'' + L_KN[u] - b|^2, 003:(42) (the constant Delta t / M dropped).
   double loss(double s0) const;
   // Largest stretch of every bond over frames 0..n.
