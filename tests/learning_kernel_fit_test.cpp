@@ -81,6 +81,7 @@ TEST_CASE("without noise the fit recovers kernel, lambda and mu to 1e-8", "[lear
     Derr = std::max(Derr, std::abs(fit.kernel.D[k] - t.kernel.D[k]));
   }
   CHECK(Derr < 1e-8 * Dmax);
+  CHECK(fit.kernel.weightedVolume() == Approx(1.0).epsilon(1e-12));  // the reported normalization
 }
 
 TEST_CASE("with 1% noise on b the 95% intervals cover the truth in at least 18 of 20 seeds", "[learning]") {

@@ -3,8 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/errors.hpp"
-
 namespace peristep::learning {
 
 namespace {
@@ -37,12 +35,6 @@ double BernsteinKernel::weightedVolume() const {
   double m = 0.0;
   for (int k = 0; k <= order(); ++k) m += D[static_cast<std::size_t>(k)] * weightedVolumeCoefficient(k);
   return m;
-}
-
-void normalize(BernsteinKernel& kernel) {
-  const double m = kernel.weightedVolume();
-  require(std::isfinite(m) && m != 0.0, "learned kernel: the weighted volume is zero, K cannot be normalized");
-  for (double& d : kernel.D) d /= m;
 }
 
 }  // namespace peristep::learning

@@ -23,8 +23,4 @@ struct BernsteinKernel {
   double weightedVolumeCoefficient(int k) const;
 };
 
-// The LPS operator depends on K only through K/m (003:(17)-(18)): K and c K are the same model. The
-// learned kernel is reported with int K |z|^2 dz = 1; this rescales D to that.
-void normalize(BernsteinKernel& kernel);
-
 }  // namespace peristep::learning

@@ -23,7 +23,6 @@ class DamagedLpsOperator {
   // Largest stretches to start from: +infinity (broken for every s0) on the bonds that cross the segment
   // (ax, ay)-(bx, by), a pre-existing slit; -infinity elsewhere.
   std::vector<double> slit(double ax, double ay, double bx, double by) const;
-  std::size_t bonds() const { return neighbour_.size(); }
   const CoarseGrid& grid() const { return grid_; }
 
  private:

@@ -14,10 +14,10 @@ struct Model {
   std::vector<double> D;
 };
 
-// (xi_0..xi_{P-1}[, alpha]) -> alpha, D with xi_P = 1 - sum xi_k and D_k = xi_k / c_k(alpha).
-Model modelOf(const StaticResidual& res, const Eigen::VectorXd& beta, const KernelFitOptions& o) {
+// (xi_0..xi_{P-1}, alpha) -> alpha, D with xi_P = 1 - sum xi_k and D_k = xi_k / c_k(alpha).
+Model modelOf(const StaticResidual& res, const Eigen::VectorXd& beta) {
   const int P = res.order();
-  Model m{o.fitAlpha ? beta[P] : o.alpha0, {}};
+  Model m{beta[P], {}};
   BernsteinKernel k{res.delta(), m.alpha, std::vector<double>(static_cast<std::size_t>(P) + 1, 0.0)};
   double last = 1.0;
   for (int i = 0; i <= P; ++i) {
@@ -59,20 +59,19 @@ double stepOf(double v) { return 1e-6 * std::max(1.0, std::abs(v)); }
 
 KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
   const int P = res.order();
-  const Eigen::Index nb = P + (o.fitAlpha ? 1 : 0);
-  require(nb > 0, "kernel fit: nothing to fit (P = 0 and alpha fixed); use relativeResidual");
+  const Eigen::Index nb = P + 1;
   Eigen::VectorXd beta(nb);
   for (int i = 0; i < P; ++i) beta[i] = 1.0 / (P + 1);
-  if (o.fitAlpha) beta[P] = o.alpha0;
+  beta[P] = o.alpha0;
 
   KernelFit fit;
   const auto evaluate = [&](const Eigen::VectorXd& b) {
     ++fit.evaluations;
-    return project(res, modelOf(res, b, o));
+    return project(res, modelOf(res, b));
   };
   Projection cur = evaluate(beta);
   double f = cur.r.squaredNorm(), damping = 1e-3;
-  const auto admissible = [&](const Eigen::VectorXd& b) { return !o.fitAlpha || b[P] < 3.0; };  // 003:(37)
+  const auto admissible = [&](const Eigen::VectorXd& b) { return b[P] < 3.0; };  // 003:(37)
   for (fit.iterations = 0; fit.iterations < o.maxIterations; ++fit.iterations) {
     // Jacobian of the projected residual by central differences (exact VarPro derivative up to O(h^2)).
     Eigen::MatrixXd J(cur.r.size(), nb);
@@ -111,7 +110,7 @@ KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
     }
   }
 
-  const Model m = modelOf(res, beta, o);
+  const Model m = modelOf(res, beta);
   fit.kernel = BernsteinKernel{res.delta(), m.alpha, m.D};
   fit.lambda = cur.x[0];
   fit.mu = cur.x[1];
@@ -129,13 +128,13 @@ KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
     const double h = stepOf(beta[i]);
     bp[i] += h;
     bm[i] -= h;
-    J.col(2 + i) = -(columnsOf(res, modelOf(res, bp, o)) - columnsOf(res, modelOf(res, bm, o))) * cur.x / (2 * h);
+    J.col(2 + i) = -(columnsOf(res, modelOf(res, bp)) - columnsOf(res, modelOf(res, bm))) * cur.x / (2 * h);
   }
   fit.sigma2 = f / static_cast<double>(std::max<Eigen::Index>(1, cur.r.size() - np));
   const Eigen::MatrixXd cov = fit.sigma2 * (J.transpose() * J).ldlt().solve(Eigen::MatrixXd::Identity(np, np));
   // Reported quantities q = (lambda, mu, D_0..D_P, alpha) as functions of theta: delta method.
   const auto reported = [&](const Eigen::VectorXd& theta) {
-    const Model mm = modelOf(res, theta.tail(nb), o);
+    const Model mm = modelOf(res, theta.tail(nb));
     Eigen::VectorXd q(P + 4);
     q[0] = theta[0];
     q[1] = theta[1];

@@ -20,7 +20,6 @@ namespace peristep::learning {
 
 struct KernelFitOptions {
   double alpha0 = 1.0;            // start: K = c r^-alpha0 (all xi equal)
-  bool fitAlpha = true;           // false: alpha stays alpha0
   int maxIterations = 200;
   double stepTolerance = 1e-13;   // relative size of the last LM step
 };
@@ -29,7 +28,7 @@ struct KernelFit {
   BernsteinKernel kernel;  // normalized: int K |z|^2 dz = 1
   double lambda = 0, mu = 0;
   // Standard errors (from sigma^2 (J^T J)^-1 of the full residual, delta method for D) of lambda, mu,
-  // D_0..D_P and alpha (0 when alpha is not fitted).
+  // D_0..D_P and alpha.
   double lambdaError = 0, muError = 0, alphaError = 0;
   std::vector<double> DError;
   double rss = 0;        // weighted sum of squared residuals

@@ -37,8 +37,6 @@ class StaticResidual {
                std::vector<double>& muColumn);
   int order() const { return order_; }
   double delta() const { return stencil_.delta; }
-  const LatticeStencil& stencil() const { return stencil_; }
-  const PeriodicLattice& lattice() const { return lattice_; }
 
  private:
   struct Sums {
