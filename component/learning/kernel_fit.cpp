@@ -1,0 +1,175 @@
+#include "learning/kernel_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace peristep::learning {
+
+namespace {
+
+struct Model {
+  double alpha;
+  std::vector<double> D;
+};
+
+// (xi_0..xi_{P-1}, alpha) -> alpha, D with xi_P = 1 - sum xi_k and D_k = xi_k / c_k(alpha).
+Model modelOf(const StaticResidual& res, const Eigen::VectorXd& beta) {
+  const int P = res.order();
+  Model m{beta[P], {}};
+  BernsteinKernel k{res.delta(), m.alpha, std::vector<double>(static_cast<std::size_t>(P) + 1, 0.0)};
+  double last = 1.0;
+  for (int i = 0; i <= P; ++i) {
+    const double xi = i < P ? beta[i] : last;
+    if (i < P) last -= xi;
+    m.D.push_back(xi / k.weightedVolumeCoefficient(i));
+  }
+  return m;
+}
+
+// C(beta) and the least-squares (lambda, mu) for it.
+struct Projection {
+  Eigen::MatrixXd C;
+  Eigen::Vector2d x;
+  Eigen::VectorXd r;  // rhs - C x
+};
+
+Eigen::MatrixXd columnsOf(StaticResidual& res, const Model& m) {
+  std::vector<double> c1, c2;
+  res.columns(m.alpha, m.D, c1, c2);
+  Eigen::MatrixXd C(static_cast<Eigen::Index>(res.rows()), 2);
+  C.col(0) = Eigen::Map<const Eigen::VectorXd>(c1.data(), C.rows());
+  C.col(1) = Eigen::Map<const Eigen::VectorXd>(c2.data(), C.rows());
+  return C;
+}
+
+Projection project(StaticResidual& res, const Model& m) {
+  Projection p;
+  p.C = columnsOf(res, m);
+  const Eigen::Map<const Eigen::VectorXd> b(res.rhs().data(), p.C.rows());
+  p.x = p.C.colPivHouseholderQr().solve(b);
+  p.r = b - p.C * p.x;
+  return p;
+}
+
+double stepOf(double v) { return 1e-6 * std::max(1.0, std::abs(v)); }
+
+}  // namespace
+
+KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
+  const int P = res.order();
+  const Eigen::Index nb = P + 1;
+  Eigen::VectorXd beta(nb);
+  for (int i = 0; i < P; ++i) beta[i] = 1.0 / (P + 1);
+  beta[P] = o.alpha0;
+
+  KernelFit fit;
+  const auto evaluate = [&](const Eigen::VectorXd& b) {
+    ++fit.evaluations;
+    return project(res, modelOf(res, b));
+  };
+  Projection cur = evaluate(beta);
+  double f = cur.r.squaredNorm(), damping = 1e-3;
+  const auto admissible = [&](const Eigen::VectorXd& b) { return b[P] < 3.0; };  // 003:(37)
+  for (fit.iterations = 0; fit.iterations < o.maxIterations; ++fit.iterations) {
+    // Jacobian of the projected residual by central differences (exact VarPro derivative up to O(h^2)).
+    Eigen::MatrixXd J(cur.r.size(), nb);
+    for (Eigen::Index i = 0; i < nb; ++i) {
+      Eigen::VectorXd bp = beta, bm = beta;
+      const double h = stepOf(beta[i]);
+      bp[i] += h;
+      bm[i] -= h;
+      J.col(i) = (evaluate(bp).r - evaluate(bm).r) / (2 * h);
+    }
+    const Eigen::MatrixXd JtJ = J.transpose() * J;
+    const Eigen::VectorXd g = J.transpose() * cur.r;
+    bool accepted = false;
+    Eigen::VectorXd step;
+    for (int tries = 0; tries < 40 && !accepted; ++tries) {
+      Eigen::MatrixXd A = JtJ;
+      for (Eigen::Index i = 0; i < nb; ++i) A(i, i) += damping * std::max(JtJ(i, i), 1e-300);
+      step = A.ldlt().solve(-g);
+      const Eigen::VectorXd trial = beta + step;
+      Projection next = admissible(trial) ? evaluate(trial) : Projection{};
+      const double fn = next.r.size() ? next.r.squaredNorm() : INFINITY;
+      if (std::isfinite(fn) && fn <= f) {
+        beta = trial;
+        cur = std::move(next);
+        f = fn;
+        damping = std::max(damping / 10, 1e-12);
+        accepted = true;
+      } else {
+        damping *= 10;
+      }
+    }
+    // No descent even with heavy damping: stationary to round-off. Otherwise stop on a negligible step.
+    if (!accepted || step.norm() <= o.stepTolerance * (beta.norm() + o.stepTolerance)) {
+      fit.converged = true;
+      break;
+    }
+  }
+
+  const Model m = modelOf(res, beta);
+  fit.kernel = BernsteinKernel{res.delta(), m.alpha, m.D};
+  fit.lambda = cur.x[0];
+  fit.mu = cur.x[1];
+  fit.rss = f;
+  const double bb = Eigen::Map<const Eigen::VectorXd>(res.rhs().data(), cur.r.size()).squaredNorm();
+  fit.relativeResidual = std::sqrt(f / bb);
+
+  // Covariance of theta = (lambda, mu, beta) from the full (unprojected) residual r = rhs - C(beta) (lambda, mu).
+  const Eigen::Index np = 2 + nb;
+  Eigen::MatrixXd J(cur.r.size(), np);
+  J.col(0) = -cur.C.col(0);
+  J.col(1) = -cur.C.col(1);
+  for (Eigen::Index i = 0; i < nb; ++i) {
+    Eigen::VectorXd bp = beta, bm = beta;
+    const double h = stepOf(beta[i]);
+    bp[i] += h;
+    bm[i] -= h;
+    J.col(2 + i) = -(columnsOf(res, modelOf(res, bp)) - columnsOf(res, modelOf(res, bm))) * cur.x / (2 * h);
+  }
+  fit.sigma2 = f / static_cast<double>(std::max<Eigen::Index>(1, cur.r.size() - np));
+  const Eigen::MatrixXd cov = fit.sigma2 * (J.transpose() * J).ldlt().solve(Eigen::MatrixXd::Identity(np, np));
+  // Reported quantities q = (lambda, mu, D_0..D_P, alpha) as functions of theta: delta method.
+  const auto reported = [&](const Eigen::VectorXd& theta) {
+    const Model mm = modelOf(res, theta.tail(nb));
+    Eigen::VectorXd q(P + 4);
+    q[0] = theta[0];
+    q[1] = theta[1];
+    for (int k = 0; k <= P; ++k) q[2 + k] = mm.D[static_cast<std::size_t>(k)];
+    q[P + 3] = mm.alpha;
+    return q;
+  };
+  Eigen::VectorXd theta(np);
+  theta << cur.x, beta;
+  Eigen::MatrixXd T(P + 4, np);
+  for (Eigen::Index i = 0; i < np; ++i) {
+    Eigen::VectorXd tp = theta, tm = theta;
+    const double h = stepOf(theta[i]);
+    tp[i] += h;
+    tm[i] -= h;
+    T.col(i) = (reported(tp) - reported(tm)) / (2 * h);
+  }
+  const Eigen::VectorXd var = (T * cov * T.transpose()).diagonal();
+  fit.lambdaError = std::sqrt(var[0]);
+  fit.muError = std::sqrt(var[1]);
+  for (int k = 0; k <= P; ++k) fit.DError.push_back(std::sqrt(var[2 + k]));
+  fit.alphaError = std::sqrt(var[P + 3]);
+  return fit;
+}
+
+double relativeResidual(StaticResidual& res, const BernsteinKernel& kernel, double lambda, double mu) {
+  std::vector<double> c1, c2;
+  res.columns(kernel.alpha, kernel.D, c1, c2);
+  double rr = 0.0, bb = 0.0;
+  for (std::size_t i = 0; i < res.rows(); ++i) {
+    const double r = lambda * c1[i] + mu * c2[i] - res.rhs()[i];
+    rr += r * r;
+    bb += res.rhs()[i] * res.rhs()[i];
+  }
+  return std::sqrt(rr / bb);
+}
+
+}  // namespace peristep::learning
