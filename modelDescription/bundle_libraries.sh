@@ -33,10 +33,16 @@ licenses=$out/documentation/licenses
 rm -rf "$out"
 mkdir -p "$binaries" "$licenses"
 
-owner() {  # the Debian package that installed a file
-  local package
-  package=$(dpkg-query -S "$1" 2>/dev/null | head -n1) || { echo "bundle_libraries: no package owns $1" >&2; exit 1; }
-  echo "${package%%:*}"
+owner() {  # the Debian package that installed a file (under /lib or /usr/lib: Debian 12 merges the two)
+  local package candidate
+  for candidate in "$1" "${1#/usr}" "/usr$1"; do
+    if package=$(dpkg-query -S "$candidate" 2>/dev/null | head -n1) && [ -n "$package" ]; then
+      echo "${package%%:*}"
+      return
+    fi
+  done
+  echo "bundle_libraries: no package owns $1" >&2
+  exit 1
 }
 
 copyright() {  # copies a package's copyright file once; fails if the system was stripped of it

@@ -80,7 +80,7 @@ std::vector<Variable> makeTable() {
       {.name = "seed", .vr = PERISTEP_VR_SEED, .type = T::UInt64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Seed of the point jitter", .start = "1"},
       {.name = "linearSolver", .vr = PERISTEP_VR_LINEAR_SOLVER, .type = T::Enumeration, .causality = C::Parameter,
-       .variability = V::Fixed, .initial = I::Exact, .description = "Sparse solver of the (u, theta) system",
+       .variability = V::Fixed, .initial = I::Exact, .description = "Sparse solver of the elastic (u, theta) systems of Tests 1-3; the fracture scenes use their crack-zone solver (MUMPS)",
        .declaredType = "PeriStep.LinearSolver", .start = "1"},
       {.name = "xi", .vr = PERISTEP_VR_XI, .type = T::Float64, .causality = C::Parameter, .variability = V::Fixed,
        .initial = I::Exact,

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <iterator>
 
 #include "core/byte_stream.hpp"
@@ -229,8 +228,7 @@ void QuasiStaticFracture::factorizeZone(LoadStepReport& report) {
   Stopwatch clock;
   const std::vector<double> ratio = stretchRatios(bonds_, disc_->cloud, disc_->neighbours, u_);
   factoredA_ = system_.A;
-  static const std::size_t cap = std::getenv("ZONE") ? std::stoul(std::getenv("ZONE")) : kZoneUnknowns;
-  const std::size_t budget = std::min(cap, static_cast<std::size_t>(disc_->dofs.size) / kZoneShare);
+  const std::size_t budget = std::min(kZoneUnknowns, static_cast<std::size_t>(disc_->dofs.size) / kZoneShare);
   zone_->factorize(factoredA_, zone_->planCore(ratio, kZoneRatio, budget));
   factoredBroken_ = denseBase_ = brokenByLoading_.size();
   hasFactorization_ = factorizationLive_ = matrixFactored_ = true;
