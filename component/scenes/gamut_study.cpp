@@ -1,6 +1,7 @@
 #include "scenes/gamut_study.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "core/errors.hpp"
 #include "core/parallel_errors.hpp"
@@ -19,17 +20,29 @@ GamutStudy runGamutStudy(const GamutStudySpec& spec) {
     errors.capture([&] {
       GamutRealization& run = study.runs[static_cast<std::size_t>(r)];
       const GamutBar bar(spec.bar, spec.firstRealization + static_cast<std::size_t>(r));
-      if (spec.cyclic) {
-        GamutBarSolver solver(bar);
-        run.loops = cyclicLoading(solver, protocol, spec.bar.area);
-        run.fit = fitCyclicCurve(run.loops.stressAmplitude, run.loops.plasticStrainAmplitude);
-        run.counters = solver.counters();
-      }
-      if (spec.monotonic) {
-        GamutBarSolver solver(bar);
-        run.curve = monotonicLoading(solver, spec.bar.material.failureStrain);
-        run.counters += solver.counters();
-      }
+      // A realization whose local strains pass the solver's bound for the far elements (a strongly
+      // localizing one) runs again with every element free to slip.
+      auto withFallback = [&](auto&& body) {
+        try {
+          body(0.0);
+        } catch (const LinearRangeExceeded&) {
+          ++run.reruns;
+          body(std::numeric_limits<double>::infinity());
+        }
+      };
+      if (spec.cyclic)
+        withFallback([&](double linearStrain) {
+          GamutBarSolver solver(bar, linearStrain);
+          run.loops = cyclicLoading(solver, protocol, spec.bar.area);
+          run.fit = fitCyclicCurve(run.loops.stressAmplitude, run.loops.plasticStrainAmplitude);
+          run.counters += solver.counters();
+        });
+      if (spec.monotonic)
+        withFallback([&](double linearStrain) {
+          GamutBarSolver solver(bar, linearStrain);
+          run.curve = monotonicLoading(solver, spec.bar.material.failureStrain);
+          run.counters += solver.counters();
+        });
     });
   errors.rethrow();
 

@@ -26,6 +26,7 @@ struct GamutRealization {
   CyclicLoops loops;
   MonotonicCurve curve;
   GamutSolverCounters counters;
+  int reruns = 0;  // runs repeated without the solver's linear part (LinearRangeExceeded)
 };
 
 struct GamutStudy {

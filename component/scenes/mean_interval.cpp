@@ -8,8 +8,8 @@ namespace peristep {
 
 double studentQuantile975(int dof) {
   require(dof >= 1, "Student quantile: needs at least one degree of freedom");
-  if (dof == 1) return 12.7062;
-  if (dof == 2) return 4.3027;
+  constexpr double kSmall[4] = {12.7062, 4.3027, 3.1824, 2.7764};  // tables, dof 1 .. 4
+  if (dof <= 4) return kSmall[dof - 1];
   const double z = 1.959963984540054, z2 = z * z, v = dof;
   const double g1 = (z2 + 1) * z / 4;
   const double g2 = ((5 * z2 + 16) * z2 + 3) * z / 96;

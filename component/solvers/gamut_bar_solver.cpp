@@ -62,8 +62,6 @@ GamutBarSolver::GamutBarSolver(const GamutBar& bar, double linearStrain)
   if (elasticFactor_.info() != Eigen::Success) throw SolverFailure("gamut bar: the elastic stiffness matrix is not positive definite");
   ++counters_.factorizations;
   tangent_ = elastic_;
-  // 1e-8 of the yield force: a strain error below 1e-8 (the plastic strain amplitudes are >= 2e-3).
-  tolerance_ = 1e-8 * bar.spec().area * bar.spec().material.yieldStress;
 }
 
 void GamutBarSolver::useElasticTangent() {
@@ -140,13 +138,15 @@ bool GamutBarSolver::solveTo(double force) {
   // convex and C1: Newton directions of any positive definite tangent with a backtracking (Armijo)
   // line search converge.
   u_ = uCommitted_;
+  // Residual below 1e-9 of the larger end force of the step: a relative strain error of that order.
+  const double tolerance = 1e-9 * std::max(std::abs(force), std::abs(force_));
   double r = evaluate(force, false);
   double previous = std::numeric_limits<double>::infinity();
   Eigen::VectorXd direction, base;
   for (int it = 0; it < kMaxIterations; ++it) {
     ++counters_.iterations;
     if (!std::isfinite(r)) return false;
-    if (r <= tolerance_) return true;
+    if (r <= tolerance) return true;
     if (tangentChanged_ && !(r < kFastEnough * previous)) {
       factorize();
       if (factor_.info() != Eigen::Success) useElasticTangent();  // the elastic tangent is always definite
@@ -188,7 +188,7 @@ void GamutBarSolver::commit(double force) {
   double previous = 0;
   for (int j = 0; j < n_; ++j) {
     if (std::abs(u_[j] - previous) > linearStrain_ * (x[j + 1] - x[j]))
-      throw SolverFailure("gamut bar: a local strain passed " + std::to_string(linearStrain_) +
+      throw LinearRangeExceeded("gamut bar: a local strain passed " + std::to_string(linearStrain_) +
                           ", the bound below which the far elements were taken as elastic");
     previous = u_[j];
   }

@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/errors.hpp"
 #include "models/gamut_bar.hpp"
 
 namespace peristep {
@@ -21,6 +22,11 @@ struct GamutBarOutput {
   double strain = 0;  // u(L) / L
   // Bonds with an element that stopped absorbing energy in this step (slipping, 002:(35)).
   std::size_t brokenBonds = 0;
+};
+
+// A local strain passed the solver's linearStrain: rerun with a larger one (infinity: no linear part).
+struct LinearRangeExceeded : SolverFailure {
+  using SolverFailure::SolverFailure;
 };
 
 struct GamutSolverCounters {
@@ -37,7 +43,7 @@ struct GamutSolverCounters {
 
 class GamutBarSolver {
  public:
-  // linearStrain <= 0: four times the material's eps_f.
+  // linearStrain <= 0: four times the material's eps_f; infinity: every element may slip.
   explicit GamutBarSolver(const GamutBar& bar, double linearStrain = 0);
 
   // Moves the end force from its last value to `force` [N] and returns the equilibrium reached. Throws
@@ -74,7 +80,7 @@ class GamutBarSolver {
   Eigen::LLT<Eigen::MatrixXf> factor_;
   bool usingElasticFactor_ = true, tangentIsElastic_ = true, tangentChanged_ = false;
   Eigen::VectorXd u_, uCommitted_, residual_;
-  double force_ = 0, lastIncrement_ = 0, tolerance_ = 0, energy_ = 0;
+  double force_ = 0, lastIncrement_ = 0, energy_ = 0;
   GamutSolverCounters counters_;
 };
 
