@@ -1,30 +1,32 @@
 #pragma once
 // The discrete 1D bar of 002 (Desai), Eq. (25)/(B.8) in its quasi-static form K_NL U = F: every pair of
-// points interacts, neighbours through local bonds (002:(28) C = A E / l, carrying the share 1 - R of the
-// point's stiffness), all other pairs through nonlocal bonds that carry the share R w (002:(24): U_NL =
-// w R U_L, i.e. DG_L = DG_NL of 002:(4)), with Gaussian weights w (002:(21)-(22), (31)).
+// points interacts, neighbours through local bonds (002:(28) C = A E / l), all other pairs through
+// nonlocal bonds carrying the share R w of their points' stiffness (002:(24): U_NL = w R U_L, i.e.
+// DG_L = DG_NL of 002:(4)), with Gaussian weights w (002:(21)-(22), (31)) and R from 002:(30).
 //
 // Reading of what 002 leaves to its reference [29] (not available), written down once here:
-//  * Elements. Each bond carries one element per owning point (the local bond one, a nonlocal bond one
-//    for each end point, whose weight and R it uses). An element is elastic with stiffness k until its
-//    force reaches the cap k eps_c l; then it stops absorbing energy, dU/dt = 0 (002:(35)): it slips at
-//    constant force. This is the reading of "breaking" that gives stable hysteresis: an element that
-//    dropped its force to zero would release energy (dU/dt < 0, not -> 0) and the bar would unload to the
-//    origin along a secant, with no loop at all. A slipped element keeps its offset, reloads elastically
-//    on reversal and slips again in the opposite direction at -cap (kinematic, rate independent).
-//  * Critical strains. 002 Sec. 3.1.3 requires every point to deform like its equivalent-isotropic
-//    material (Ramberg-Osgood with the point's E), and line 49 that the weight sets the critical
-//    deformation of a nonlocal bond. So each point's elements form a ladder ordered by weight: the local
-//    one first, then the nonlocal ones by increasing distance; element i slips when the point's
-//    Ramberg-Osgood tangent modulus has fallen to E (S_{i-1} + S_i) / 2, S_i being the share of the
-//    point's elements still elastic after it. A homogeneous bar then follows Ramberg-Osgood on loading
-//    and Masing loops (twice the curve) on reversal.
-//  * Ends. The bar is fixed at x = 0 and pulled at x = L. Nonlocal bonds reach across both ends into
-//    the mirror images of the bar (the odd reflection u(-x) = -u(x), u(2L - x) = 2 u(L) - u(x)), so that a
-//    homogeneous bar strains uniformly and a point near an end is not stiffer than one inside; 002 does
-//    not treat its ends, and without this the ends carry twice the nonlocal stiffness.
-//  * Misprints (see DESIGN.md 5.6): U = C (l eps)^2 / 2 for (15)/(29); the ratio in (23) is U_i / U_j;
-//    (32) follows (22). R outside [0, 1] after the scatter of (26) is clamped to [0, 1].
+//  * Unloading. Every bond carries elements (a nonlocal bond one per end point, with that point's w and
+//    R). An element is elastic until its force reaches a cap; then it stops absorbing energy, dU/dt = 0
+//    (002:(35)): it slips at constant force, keeps the slip when unloaded, reloads elastically and slips
+//    again at minus the cap (kinematic, rate independent). This is the reading of "breaking" that gives
+//    stable hysteresis loops: an element that dropped its force to zero would release energy (dU/dt < 0,
+//    not -> 0), and a bar of such bonds unloads to the origin along a secant, with no loop at all.
+//  * Critical strains. 002 Sec. 3.1.3: every point deforms like its equivalent-isotropic material
+//    (Ramberg-Osgood with the point's E); 002 Sec. 2: the weight sets the critical deformation of a
+//    nonlocal bond. So a point's nonlocal elements slip in the order of their weights, heaviest first;
+//    the group with shares S_before -> S_after slips when the point's Ramberg-Osgood tangent modulus has
+//    fallen to E (S_before + S_after) / 2. The local bond of each cut (002:(B.4): the part of the force
+//    that stays local) takes what the nonlocal elements crossing the cut leave of A sigma_RO(eps) under a
+//    uniform strain (gamut_local_bonds.hpp). A homogeneous bar then follows Ramberg-Osgood and its loops
+//    are the Masing loops of the classical baseline.
+//  * Ends. The bar is fixed at x = 0 and pulled at x = L. Nonlocal bonds reach across both ends into the
+//    mirror images of the bar (u(-x) = -u(x), u(2L - x) = 2 u(L) - u(x)), so that a homogeneous bar
+//    strains uniformly; 002 does not treat its ends, and without this they carry twice the nonlocal
+//    stiffness of the middle.
+//  * sigma_stdev of 002:(31) uses the "uncalibrated potentials" of equal springs under a uniform strain
+//    (U ~ l^2) and the farthest distance L (gamut_weights.hpp).
+//  * Misprints (DESIGN.md 5.6): U = C (l eps)^2 / 2 in (15)/(29); the ratio in (23) is U_i / U_j; (32)
+//    follows (22). A draw of R at or beyond 1 (or <= 0) is drawn again (002 says R lies in [0, 1]).
 //  * The mass (002:(14), (34)) does not enter the quasi-static problem and is not modelled.
 #include <array>
 #include <cstdint>

@@ -41,6 +41,7 @@ GamutBarSolver::GamutBarSolver(const GamutBar& bar, double linearStrain)
       } else {
         stiffness_.push_back(k[e]);
         cap_.push_back(cap[e]);
+        halfSlip_.push_back(0.5 * cap[e] / k[e]);
         active += k[e];
       }
     }
@@ -48,11 +49,17 @@ GamutBarSolver::GamutBarSolver(const GamutBar& bar, double linearStrain)
     if (stiffness_.size() > first_.back()) {
       unknown_.push_back(bar.bondUnknowns()[b]);
       coef_.push_back(bar.bondCoefficients()[b]);
+      std::array<int, 3> s = bar.bondUnknowns()[b];
+      for (int& i : s)
+        if (i < 0) i = n_;
+      slot_.push_back(s);
       first_.push_back(stiffness_.size());
       elasticBondTangent_.push_back(active);
     }
   }
   offset_.assign(stiffness_.size(), 0.0);
+  padded_ = Eigen::VectorXd::Zero(n_ + 1);
+  paddedResidual_ = Eigen::VectorXd::Zero(n_ + 1);
   bondTangent_ = elasticBondTangent_;
   trialTangent_ = elasticBondTangent_;
   bondSlipping_.assign(unknown_.size(), 0);
@@ -98,35 +105,36 @@ double GamutBarSolver::evaluate(double force, bool updateTangent) {
   double energy = -0.5 * u_.dot(residual_) - force * u_[loaded];
   residual_[loaded] += force;
   if (updateTangent) tangentChanged_ = false;
-  for (std::size_t b = 0; b < unknown_.size(); ++b) {
-    const auto& u = unknown_[b];
+  // Padded copies: slot n_ is the fixed node (always 0), so a bond's elongation has no branches.
+  padded_.head(n_) = u_;
+  paddedResidual_.head(n_) = residual_;
+  const double* u = padded_.data();
+  double* r = paddedResidual_.data();
+  for (std::size_t b = 0; b < slot_.size(); ++b) {
+    const auto& s = slot_[b];
     const auto& c = coef_[b];
-    double e = 0;
-    for (int i = 0; i < 3; ++i)
-      if (u[i] >= 0) e += c[i] * u_[u[i]];
+    const double e = c[0] * u[s[0]] + c[1] * u[s[1]] + c[2] * u[s[2]];
     double t = 0, kt = 0;
     bool slipping = false;
     for (std::size_t el = first_[b]; el < first_[b + 1]; ++el) {
       const double stretch = e - offset_[el];
       const double trial = stiffness_[el] * stretch;
-      if (std::abs(trial) > cap_[el]) {  // slips at its cap: dU/dt = 0, 002:(35)
-        t += std::copysign(cap_[el], trial);
-        energy += cap_[el] * (std::abs(stretch) - 0.5 * cap_[el] / stiffness_[el]);
-        slipping = true;
-      } else {
-        t += trial;
-        kt += stiffness_[el];
-        energy += 0.5 * trial * stretch;
-      }
+      const bool slip = std::abs(trial) > cap_[el];  // slips at its cap: dU/dt = 0, 002:(35)
+      t += slip ? std::copysign(cap_[el], trial) : trial;
+      kt += slip ? 0.0 : stiffness_[el];
+      energy += slip ? cap_[el] * (std::abs(stretch) - halfSlip_[el]) : 0.5 * trial * stretch;
+      slipping |= slip;
     }
     bondSlipping_[b] = slipping;
     if (updateTangent) {
       trialTangent_[b] = kt;
       tangentChanged_ |= kt != bondTangent_[b];
     }
-    for (int i = 0; i < 3; ++i)
-      if (u[i] >= 0) residual_[u[i]] -= c[i] * t;
+    r[s[0]] -= c[0] * t;
+    r[s[1]] -= c[1] * t;
+    r[s[2]] -= c[2] * t;
   }
+  residual_ = paddedResidual_.head(n_);
   energy_ = energy;
   return residual_.lpNorm<Eigen::Infinity>();
 }
@@ -174,10 +182,11 @@ bool GamutBarSolver::solveTo(double force) {
 }
 
 void GamutBarSolver::commit(double force) {
-  for (std::size_t b = 0; b < unknown_.size(); ++b) {
-    double e = 0;
-    for (int i = 0; i < 3; ++i)
-      if (unknown_[b][i] >= 0) e += coef_[b][i] * u_[unknown_[b][i]];
+  padded_.head(n_) = u_;
+  for (std::size_t b = 0; b < slot_.size(); ++b) {
+    const auto& s = slot_[b];
+    const auto& c = coef_[b];
+    const double e = c[0] * padded_[s[0]] + c[1] * padded_[s[1]] + c[2] * padded_[s[2]];
     for (std::size_t el = first_[b]; el < first_[b + 1]; ++el) {
       const double trial = stiffness_[el] * (e - offset_[el]);
       if (std::abs(trial) > cap_[el]) offset_[el] = e - std::copysign(cap_[el], trial) / stiffness_[el];

@@ -68,10 +68,11 @@ class GamutBarSolver {
   int n_;
   double linearStrain_;
   // Bonds with elements that may slip, and those elements (offset: committed slip, elongation units).
-  std::vector<std::array<int, 3>> unknown_;
+  // (slot_: the unknowns with the fixed node as slot n_ of the padded vectors; halfSlip_: cap / 2k.)
+  std::vector<std::array<int, 3>> unknown_, slot_;
   std::vector<std::array<double, 3>> coef_;
   std::vector<std::size_t> first_;
-  std::vector<double> stiffness_, cap_, offset_;
+  std::vector<double> stiffness_, cap_, halfSlip_, offset_;
   // The tangent each bond has in tangent_, in elastic_, and at the last evaluation.
   std::vector<double> bondTangent_, elasticBondTangent_, trialTangent_;
   std::vector<unsigned char> bondSlipping_;
@@ -79,7 +80,7 @@ class GamutBarSolver {
   Eigen::LLT<Eigen::MatrixXd> elasticFactor_;
   Eigen::LLT<Eigen::MatrixXf> factor_;
   bool usingElasticFactor_ = true, tangentIsElastic_ = true, tangentChanged_ = false;
-  Eigen::VectorXd u_, uCommitted_, residual_;
+  Eigen::VectorXd u_, uCommitted_, residual_, padded_, paddedResidual_;
   double force_ = 0, lastIncrement_ = 0, energy_ = 0;
   GamutSolverCounters counters_;
 };
