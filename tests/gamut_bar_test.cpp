@@ -141,6 +141,9 @@ TEST_CASE("bad bar parameters are refused with a message", "[gamut]") {
   spec.area = 0;
   CHECK_THROWS_AS(GamutBar(spec, 0), InvalidInput);
   spec.area = 1e-4;
-  spec.scatter.denominator = 0.5;  // W / 0.5 > 1 makes moduli negative
+  spec.scatter.denominator = 0;
   CHECK_THROWS_AS(GamutBar(spec, 0), InvalidInput);
+  spec.scatter.denominator = 10;
+  spec.scatter.weibullShape = 1;  // draws with W > 10 (e^-10 each) are drawn again
+  CHECK_NOTHROW(GamutBar(spec, 0));
 }

@@ -49,10 +49,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
   // Point properties: E by 002:(26); R from 002:(30) with the point's E, then scattered by (26) itself.
   modulus_.resize(points);
   std::vector<double> softness(points);
-  for (double& E : modulus_) {
-    E = spec.material.youngsModulus * (spec.scatterProperties ? 1.0 + stream.relativeScatter(spec.scatter) : 1.0);
-    require(E > 0, "gamut bar: the scatter of 002:(26) made a Young's modulus non-positive (raise the denominator)");
-  }
+  for (double& E : modulus_) E = spec.material.youngsModulus * (spec.scatterProperties ? stream.positiveFactor(spec.scatter) : 1.0);
   // 002 says R lies in [0, 1]; a draw at or beyond 1 would leave the local bond without stiffness and
   // is drawn again, as 002 Sec. 4.3 draws a grid again when points overlap.
   for (std::size_t p = 0; p < points; ++p) {

@@ -17,8 +17,7 @@ void calibratedWeights(std::span<const double> distances, double sigma, ScatterS
   for (std::size_t i = 0; i < distances.size(); ++i) {
     // The 1 / sqrt(2 pi sigma^2) of (22) cancels in the normalization (21).
     double w = std::exp(-distances[i] * distances[i] / (2 * sigma * sigma));
-    if (stream) w *= 1.0 + stream->relativeScatter(law);
-    if (!(w > 0)) throw InvalidInput("gamut weights: the scatter of 002:(26) made a weight non-positive (raise the denominator)");
+    if (stream) w *= stream->positiveFactor(law);
     weights[i] = w;
     sum += w;
   }

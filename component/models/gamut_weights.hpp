@@ -13,7 +13,7 @@ double interactionLength(double nearest, double farthest);
 
 // Weights of the nonlocal points at `distances`: the Gaussian of 002:(22) (the exp(-l^2 / (2 sigma^2))
 // of (22), not the misprinted exp(-l / (2 sigma)) of (32)), scattered by 002:(26) when `stream` is not
-// null, normalized to sum 1 (002:(21), (13)).
+// null (a factor <= 0 drawn again), normalized to sum 1 (002:(21), (13)).
 void calibratedWeights(std::span<const double> distances, double sigma, ScatterStream* stream, const ScatterLaw& law,
                        std::span<double> weights);
 

@@ -26,4 +26,11 @@ double ScatterStream::relativeScatter(const ScatterLaw& law) {
   return s * weibull(law.weibullScale, law.weibullShape) / law.denominator;
 }
 
+double ScatterStream::positiveFactor(const ScatterLaw& law) {
+  double f;
+  do f = 1.0 + relativeScatter(law);
+  while (f <= 0);
+  return f;
+}
+
 }  // namespace peristep

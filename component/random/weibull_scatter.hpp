@@ -26,6 +26,9 @@ class ScatterStream {
   double weibull(double scale, double shape);  // scale (-ln U)^(1/shape)
   // The relative perturbation sign W / denominator of 002:(26).
   double relativeScatter(const ScatterLaw& law);
+  // 1 + relativeScatter, drawn again while it is <= 0 (a modulus or weight must stay positive; with
+  // shape 2 and /10 that needs W > 10, probability e^-100; with shape 1, e^-10).
+  double positiveFactor(const ScatterLaw& law);
 
  private:
   std::mt19937_64 engine_;
