@@ -50,8 +50,8 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
   modulus_.resize(points);
   std::vector<double> softness(points);
   for (double& E : modulus_) E = spec.material.youngsModulus * (spec.scatterProperties ? stream.positiveFactor(spec.scatter) : 1.0);
-  // 002 says R lies in [0, 1]; a draw at or beyond 1 would leave the local bond without stiffness and
-  // is drawn again, as 002 Sec. 4.3 draws a grid again when points overlap.
+  // 002 says R lies in [0, 1] (Sec. 2); a draw outside (0, 1) is drawn again, as 002 Sec. 4.3 draws a
+  // grid again when points overlap.
   for (std::size_t p = 0; p < points; ++p) {
     const double mean = spec.material.softness(modulus_[p]);
     require(mean > 0 && mean < 1, "gamut bar: the material's modulus of softness R of 002:(30) lies outside (0, 1)");
@@ -101,12 +101,12 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
     RambergOsgood own = spec.material;
     own.youngsModulus = modulus_[p];
     const double E = own.youngsModulus;
-    // An element slips when the point's tangent modulus has fallen to E (S_before + S_after) / 2, S
-    // being the share of the point's nonlocal elements still elastic.
+    // The point's nonlocal elements carry R of its stiffness (002:(B.5)) and slip in the order of their
+    // weights, the heaviest (nearest) first, so that the weight sets the critical deformation (002
+    // Sec. 2) and the many light elements resolve the flat end of the curve where the cyclic amplitudes
+    // lie. A group of elements slips when the point's tangent modulus has fallen to
+    // E (S_before + S_after) / 2, S being the share of its nonlocal elements still elastic.
     auto slipStrain = [&](double after, double share) { return own.strain(own.stressAtTangent(E * (after + 0.5 * share))); };
-    // The nonlocal bonds carry R of it (002:(B.5)); their elements slip in the order of their weights,
-    // the heaviest (nearest) first, so that the weight sets the critical deformation (002 Sec. 2) and
-    // the many light elements resolve the flat end of the curve where the cyclic amplitudes lie.
     order.resize(partners.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return weight[a] < weight[b]; });
@@ -153,7 +153,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
   // Nonlocal element of owner o on a bond of length l: U_NL = w R U_L (002:(24)) under a uniform strain.
   auto addNonlocal = [&](std::size_t o, int side, std::size_t q, double l) {
     const std::size_t at = table.at(o, side, q);
-    if (softness[o] > 0 && table.weight[at] >= spec.weightCutoff)
+    if (table.weight[at] >= spec.weightCutoff)
       addElement(table.weight[at] * softness[o] * A * modulus_[o] * cell[o] / (l * l), table.strain[at], l);
   };
   auto closeBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l) {
