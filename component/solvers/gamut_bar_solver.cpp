@@ -182,6 +182,15 @@ bool GamutBarSolver::solveTo(double force) {
 }
 
 void GamutBarSolver::commit(double force) {
+  // The elements summed into linear_ stay elastic while no local bond strains beyond linearStrain_.
+  const auto& x = bar_.positions();
+  double previous = 0;
+  for (int j = 0; j < n_; ++j) {
+    if (std::abs(u_[j] - previous) > linearStrain_ * (x[j + 1] - x[j]))
+      throw LinearRangeExceeded("gamut bar: a local strain passed " + std::to_string(linearStrain_) +
+                                ", the bound below which the far elements were taken as elastic");
+    previous = u_[j];
+  }
   padded_.head(n_) = u_;
   for (std::size_t b = 0; b < slot_.size(); ++b) {
     const auto& s = slot_[b];
@@ -191,15 +200,6 @@ void GamutBarSolver::commit(double force) {
       const double trial = stiffness_[el] * (e - offset_[el]);
       if (std::abs(trial) > cap_[el]) offset_[el] = e - std::copysign(cap_[el], trial) / stiffness_[el];
     }
-  }
-  // The elements summed into linear_ stay elastic while no local bond strains beyond linearStrain_.
-  const auto& x = bar_.positions();
-  double previous = 0;
-  for (int j = 0; j < n_; ++j) {
-    if (std::abs(u_[j] - previous) > linearStrain_ * (x[j + 1] - x[j]))
-      throw LinearRangeExceeded("gamut bar: a local strain passed " + std::to_string(linearStrain_) +
-                          ", the bound below which the far elements were taken as elastic");
-    previous = u_[j];
   }
   uCommitted_ = u_;
   lastIncrement_ = force - force_;

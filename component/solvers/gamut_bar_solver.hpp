@@ -47,7 +47,8 @@ class GamutBarSolver {
   explicit GamutBarSolver(const GamutBar& bar, double linearStrain = 0);
 
   // Moves the end force from its last value to `force` [N] and returns the equilibrium reached. Throws
-  // SolverFailure (state unchanged) if none is found, e.g. beyond the bar's strength.
+  // SolverFailure if none is found (the state is then that of the last bisected sub-step reached), and
+  // LinearRangeExceeded (state of the last step) when a local strain passes linearStrain.
   GamutBarOutput step(double force);
 
   double force() const { return force_; }
