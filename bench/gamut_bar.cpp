@@ -201,6 +201,10 @@ int main(int argc, char** argv) try {
         std::printf("material %d %-10s %zu steps, last %.1f MPa at %.4f (RO %.4f), max |strain/RO - 1| above sigma_y %.3f, %.1f s, load %.1f\n",
                     m, stochasticGrid ? "stochastic" : "uniform", t.study.meanStress.size(), t.study.meanStress.back() / 1e6,
                     t.study.meanStrain.back(), mat.strain(t.study.meanStress.back()), worst, t.seconds, t.load);
+        for (std::size_t r = 0; r < t.study.runs.size(); ++r)
+          if (!t.study.runs[r].curve.stopped.empty())
+            std::printf("  realization %zu stopped at %.1f MPa, strain %.4f: %s\n", r, t.study.runs[r].curve.stress.back() / 1e6,
+                        t.study.runs[r].curve.strain.back(), t.study.runs[r].curve.stopped.c_str());
         if (!csvPrefix.empty()) {
           const std::string path = csvPrefix + "_m" + std::to_string(m) + (stochasticGrid ? "_stochastic" : "_uniform") + ".csv";
           std::ofstream out(path);

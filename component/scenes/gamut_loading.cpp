@@ -12,7 +12,15 @@ MonotonicCurve monotonicLoading(GamutBarSolver& solver, double failureStrain, do
   MonotonicCurve curve;
   double force = firstForce;
   for (std::size_t s = 0; s < maxSteps; ++s, force *= 1 + growth) {
-    const GamutBarOutput out = solver.step(force);
+    GamutBarOutput out;
+    try {
+      out = solver.step(force);
+    } catch (const LinearRangeExceeded&) {
+      throw;
+    } catch (const SolverFailure& e) {
+      curve.stopped = e.what();
+      break;
+    }
     curve.stress.push_back(out.stress);
     curve.strain.push_back(out.strain);
     curve.brokenBonds.push_back(out.brokenBonds);

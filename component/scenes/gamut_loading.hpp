@@ -1,6 +1,7 @@
 #pragma once
 // The loading programmes of 002 Sec. 4.1 for a GamutBarSolver.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "models/ramberg_osgood.hpp"
@@ -11,10 +12,12 @@ namespace peristep {
 struct MonotonicCurve {
   std::vector<double> stress, strain;  // one entry per force step
   std::vector<std::size_t> brokenBonds;
+  std::string stopped;  // why the ramp ended before eps_f (the solver's message), or ""
 };
 
 // 002 Sec. 4.1: the end force starts at `firstForce` (0.01 N) and grows by `growth` (1%) per step until
-// the strain passes eps_f (or `maxSteps` steps).
+// the strain passes eps_f (or `maxSteps` steps). A step without equilibrium ends the curve (`stopped`);
+// LinearRangeExceeded is passed on.
 MonotonicCurve monotonicLoading(GamutBarSolver& solver, double failureStrain, double firstForce = 0.01,
                                 double growth = 0.01, std::size_t maxSteps = 10000);
 
