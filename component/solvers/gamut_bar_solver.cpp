@@ -91,9 +91,14 @@ void GamutBarSolver::factorize() {
       tangentIsElastic_ = false;
     }
   // In single precision: the factor only gives Newton directions, the residual is double, and a
-  // relative error of 1e-7 times the condition number still converges in as many iterations.
-  factor_.compute(tangent_.cast<float>());
+  // relative error of 1e-7 times the condition number still converges in as many iterations - until
+  // the tangent is so flat (far beyond yield) that it does not; then double precision from there on.
+  if (doublePrecision_)
+    factorDouble_.compute(tangent_);
+  else
+    factor_.compute(tangent_.cast<float>());
   ++counters_.factorizations;
+  refactor_ = false;
   usingElasticFactor_ = false;
   tangentChanged_ = false;
 }
@@ -155,13 +160,16 @@ bool GamutBarSolver::solveTo(double force) {
     ++counters_.iterations;
     if (!std::isfinite(r)) return false;
     if (r <= tolerance) return true;
-    if (tangentChanged_ && !(r < kFastEnough * previous)) {
+    if (refactor_ || (tangentChanged_ && !(r < kFastEnough * previous))) {
       factorize();
-      if (factor_.info() != Eigen::Success) useElasticTangent();  // the elastic tangent is always definite
+      if ((doublePrecision_ ? factorDouble_.info() : factor_.info()) != Eigen::Success)
+        useElasticTangent();  // the elastic tangent is always definite
     }
     previous = r;
     if (usingElasticFactor_)
       direction = elasticFactor_.solve(residual_);
+    else if (doublePrecision_)
+      direction = factorDouble_.solve(residual_);
     else
       direction = factor_.solve(residual_.cast<float>()).cast<double>();
     const double slope = direction.dot(residual_), start = energy_;
@@ -215,6 +223,8 @@ GamutBarOutput GamutBarSolver::step(double force) {
     if (solveTo(target)) {
       commit(target);
       targets.pop_back();
+    } else if (!doublePrecision_) {
+      doublePrecision_ = refactor_ = true;  // first try the same step with a double-precision factor
     } else {
       if (++depth > kMaxBisections)
         throw SolverFailure("gamut bar: no equilibrium at an end force of " + std::to_string(force) + " N");

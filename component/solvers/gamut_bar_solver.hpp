@@ -80,7 +80,9 @@ class GamutBarSolver {
   Eigen::MatrixXd linear_, elastic_, tangent_;  // lower triangles are used
   Eigen::LLT<Eigen::MatrixXd> elasticFactor_;
   Eigen::LLT<Eigen::MatrixXf> factor_;
+  Eigen::LLT<Eigen::MatrixXd> factorDouble_;  // once a step failed with the single-precision factor
   bool usingElasticFactor_ = true, tangentIsElastic_ = true, tangentChanged_ = false;
+  bool doublePrecision_ = false, refactor_ = false;
   Eigen::VectorXd u_, uCommitted_, residual_, padded_, paddedResidual_;
   double force_ = 0, lastIncrement_ = 0, energy_ = 0;
   GamutSolverCounters counters_;
