@@ -1,0 +1,91 @@
+#pragma once
+// Quasi-static force-controlled loading of a GamutBar (002:(25) without inertia): the end x = L is
+// pulled by F, the end x = 0 is fixed. Every element is elastic until its cap, then slips at constant
+// force (002:(35), see gamut_bar.hpp), so a load step minimizes a convex, piecewise-quadratic potential:
+// Newton on the current set of elastic elements with a backtracking line search, the dense Cholesky
+// factor of the tangent reused as long as it still converges fast (modified Newton) and refactored when
+// elements have switched and it no longer does. Elements whose critical strain lies beyond
+// `linearStrain` cannot slip while no local bond is strained that far (an element's strain is an
+// average of local strains); they are summed once into a constant matrix, and every step checks the bound.
+#include <cstddef>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "core/errors.hpp"
+#include "models/gamut_bar.hpp"
+
+namespace peristep {
+
+struct GamutBarOutput {
+  double stress = 0;  // F / A [Pa]
+  double strain = 0;  // u(L) / L
+  // Bonds with an element that stopped absorbing energy in this step (slipping, 002:(35)).
+  std::size_t brokenBonds = 0;
+};
+
+// A local strain passed the solver's linearStrain: rerun with a larger one (infinity: no linear part).
+struct LinearRangeExceeded : SolverFailure {
+  using SolverFailure::SolverFailure;
+};
+
+struct GamutSolverCounters {
+  std::size_t steps = 0, iterations = 0, evaluations = 0, factorizations = 0, substeps = 0;
+  GamutSolverCounters& operator+=(const GamutSolverCounters& o) {
+    steps += o.steps;
+    iterations += o.iterations;
+    evaluations += o.evaluations;
+    factorizations += o.factorizations;
+    substeps += o.substeps;
+    return *this;
+  }
+};
+
+class GamutBarSolver {
+ public:
+  // linearStrain <= 0: four times the material's eps_f; infinity: every element may slip.
+  explicit GamutBarSolver(const GamutBar& bar, double linearStrain = 0);
+
+  // Moves the end force from its last value to `force` [N] and returns the equilibrium reached. Throws
+  // SolverFailure if none is found (the state is then that of the last bisected sub-step reached), and
+  // LinearRangeExceeded (state of the last step) when a local strain passes linearStrain.
+  GamutBarOutput step(double force);
+
+  double force() const { return force_; }
+  // Displacements u_1 .. u_n of the last equilibrium (u_0 = 0).
+  const Eigen::VectorXd& displacement() const { return uCommitted_; }
+  const GamutSolverCounters& counters() const { return counters_; }
+  std::size_t activeElements() const { return stiffness_.size(); }
+
+ private:
+  bool solveTo(double force);  // Newton from the committed state; false: no convergence
+  // Residual, Pi (energy_) and, if asked, the tangent at u_; returns max |residual|.
+  double evaluate(double force, bool updateTangent);
+  void commit(double force);
+  void factorize();
+  void useElasticTangent();
+
+  const GamutBar& bar_;
+  int n_;
+  double linearStrain_;
+  // Bonds with elements that may slip, and those elements (offset: committed slip, elongation units).
+  // (slot_: the unknowns with the fixed node as slot n_ of the padded vectors; halfSlip_: cap / 2k.)
+  std::vector<std::array<int, 3>> unknown_, slot_;
+  std::vector<std::array<double, 3>> coef_;
+  std::vector<std::size_t> first_;
+  std::vector<double> stiffness_, cap_, halfSlip_, offset_;
+  // The tangent each bond has in tangent_, in elastic_, and at the last evaluation.
+  std::vector<double> bondTangent_, elasticBondTangent_, trialTangent_;
+  std::vector<unsigned char> bondSlipping_;
+  Eigen::MatrixXd linear_, elastic_, tangent_;  // lower triangles are used
+  Eigen::LLT<Eigen::MatrixXd> elasticFactor_;
+  Eigen::LLT<Eigen::MatrixXf> factor_;
+  Eigen::LLT<Eigen::MatrixXd> factorDouble_;  // once a step failed with the single-precision factor
+  bool usingElasticFactor_ = true, tangentIsElastic_ = true, tangentChanged_ = false;
+  bool doublePrecision_ = false, refactor_ = false;
+  Eigen::VectorXd u_, uCommitted_, residual_, padded_, paddedResidual_;
+  double force_ = 0, lastIncrement_ = 0, energy_ = 0;
+  GamutSolverCounters counters_;
+};
+
+}  // namespace peristep
