@@ -51,7 +51,6 @@ class CrackZoneSolver {
                              int maxIterations, int restart);
 
   const std::vector<std::size_t>& corePoints() const { return core_; }
-  std::size_t zoneSize() const { return zone_.size(); }
   int denseFactorizations() const { return dense_.factorizations(); }
 
  private:

@@ -26,7 +26,6 @@ class SchurFactorization {
   void factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
                  const std::vector<std::int32_t>& position);
 
-  const std::vector<std::int64_t>& schurUnknowns() const { return schurUnknowns_; }
   // S, column-major, size |Z| x |Z|.
   const std::vector<double>& schurComplement() const { return schur_; }
 
