@@ -183,6 +183,17 @@ void QuasiStaticFracture::solveCurrent(LoadStepReport& report) {
   }
 }
 
+bool QuasiStaticFracture::iterateWithinBudget(LoadStepReport& report,
+                                              const std::function<GmresResult(int budget)>& iterate) {
+  const int budget = factorizationCost_ - staleIterations_;
+  if (budget <= 0 || lastKrylovIterations_ > budget) return false;
+  const GmresResult r = iterate(budget);
+  report.krylovIterations += r.iterations;
+  staleIterations_ += r.iterations;
+  lastKrylovIterations_ = r.iterations;
+  return r.converged;
+}
+
 void QuasiStaticFracture::solveWithFactorization(const std::vector<double>& rhs, LoadStepReport& report) {
   const bool reuseStale = reuse_ == FactorizationReuse::StaleAsPreconditioner;
   if (hasFactorization_ && !factorizationLive_ && (matrixFactored_ || reuseStale)) rebuildFactorization(report);
@@ -193,16 +204,10 @@ void QuasiStaticFracture::solveWithFactorization(const std::vector<double>& rhs,
     solved = true;
   } else if (hasFactorization_ && reuseStale) {
     // An older factorization of a nearby matrix (bonds broken since): precondition GMRES with it while
-    // that is cheaper than a new factorization. Ski rental: stop iterating once the iterations spent on
-    // this factorization would exceed the price of a new one, so at most twice the better choice is paid.
-    const int budget = factorizationCost_ - staleIterations_;
-    if (budget > 0 && lastKrylovIterations_ <= budget) {
-      const GmresResult r = gmres(system_.A, *solver_, rhs, x_, kKrylovTolerance, budget, kKrylovRestart);
-      report.krylovIterations += r.iterations;
-      staleIterations_ += r.iterations;
-      lastKrylovIterations_ = r.iterations;
-      solved = r.converged;
-    }
+    // that is cheaper than a new factorization.
+    solved = iterateWithinBudget(report, [&](int budget) {
+      return gmres(system_.A, *solver_, rhs, x_, kKrylovTolerance, budget, kKrylovRestart);
+    });
   }
   report.solveSeconds += clock.lap();
   if (!solved) {
@@ -266,15 +271,10 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
   bool solved = !outsideZone_;
   if (outsideZone_) {
     // Rows outside the core changed (the crack left the zone, or bonds broke elsewhere): GMRES with the
-    // zone solver while that is cheaper than a new zone (the ski rental of solveWithFactorization).
-    const int budget = factorizationCost_ - staleIterations_;
-    if (budget > 0 && lastKrylovIterations_ <= budget) {
-      const GmresResult r = zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, budget, kKrylovRestart);
-      report.krylovIterations += r.iterations;
-      staleIterations_ += r.iterations;
-      lastKrylovIterations_ = r.iterations;
-      solved = r.converged;
-    }
+    // zone solver while that is cheaper than a new zone.
+    solved = iterateWithinBudget(report, [&](int budget) {
+      return zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, budget, kKrylovRestart);
+    });
   }
   report.solveSeconds += clock.lap();
   if (!solved) factorizeZone(report);

@@ -11,6 +11,7 @@
 #include "fracture/bond_state.hpp"
 #include "models/lps_discretization.hpp"
 #include "solvers/crack_zone_solver.hpp"
+#include "solvers/gmres.hpp"
 #include "solvers/linear_solver.hpp"
 
 namespace peristep {
@@ -97,6 +98,9 @@ class QuasiStaticFracture {
   void rebuildZone(LoadStepReport& report);
   void solveInZone(const std::vector<double>& rhs, LoadStepReport& report);
   void solveWithFactorization(const std::vector<double>& rhs, LoadStepReport& report);
+  // Ski rental: GMRES with an older factorization while the iterations spent on it stay below the price of
+  // a new one (so at most twice the better choice is paid); false when over budget or not converged.
+  bool iterateWithinBudget(LoadStepReport& report, const std::function<GmresResult(int budget)>& iterate);
   std::vector<std::uint8_t> intactAt(std::size_t broken) const;
   void factorizeCurrent(LoadStepReport& report);
   void rebuildFactorization(LoadStepReport& report);

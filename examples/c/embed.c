@@ -21,17 +21,9 @@
 enum { NX = 17, NY = 17 };
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    fprintf(stderr, "usage: %s <path to PeriStep.so>\n", argv[0]);
-    return 2;
-  }
-
   /* 1. Load the shared library and look up the functions this program calls. */
-  void* library = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
-  if (!library) {
-    fprintf(stderr, "embed: %s\n", dlerror());
-    return 1;
-  }
+  void* library = openLibrary(argc, argv);
+  if (!library) return argc != 2 ? 2 : 1;
   LOOKUP(fmi3InstantiateCoSimulation)
   LOOKUP(fmi3EnterConfigurationMode)
   LOOKUP(fmi3ExitConfigurationMode)

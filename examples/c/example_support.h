@@ -1,4 +1,4 @@
-/* What the C examples share: the log callback and two macros, LOOKUP (a function of the loaded library
+/* What the C examples share: opening the library, the log callback and two macros, LOOKUP (a function of the loaded library
  * by name, into a local of the FMI type; needs `library`) and CHECK (a call that must return fmi3OK).
  * Both return 1 from main with a message on failure. */
 #ifndef example_support_h
@@ -13,6 +13,17 @@
 static void logMessage(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category, fmi3String message) {
   (void)env;
   fprintf(stderr, "PeriStep [%s, status %d]: %s\n", category, (int)status, message);
+}
+
+/* The library named by the one command-line argument, dlopen'ed; NULL (with a message) when it cannot be. */
+static void* openLibrary(int argc, char** argv) {
+  if (argc != 2) {
+    fprintf(stderr, "usage: %s <path to PeriStep.so>\n", argv[0]);
+    return NULL;
+  }
+  void* library = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
+  if (!library) fprintf(stderr, "%s: %s\n", argv[0], dlerror());
+  return library;
 }
 
 /* dlsym returns void*; POSIX allows reading it into a function pointer through its address. */

@@ -32,15 +32,8 @@ static const char* const PICTURE[NY] = {
 static char at(int i, int j) { return PICTURE[NY - 1 - j][i]; }
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    fprintf(stderr, "usage: %s <path to PeriStep.so>\n", argv[0]);
-    return 2;
-  }
-  void* library = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
-  if (!library) {
-    fprintf(stderr, "specimen: %s\n", dlerror());
-    return 1;
-  }
+  void* library = openLibrary(argc, argv);
+  if (!library) return argc != 2 ? 2 : 1;
   LOOKUP(fmi3InstantiateCoSimulation)
   LOOKUP(fmi3EnterConfigurationMode)
   LOOKUP(fmi3ExitConfigurationMode)
