@@ -5,10 +5,12 @@
 
 #include "commands/commands.hpp"
 #include "host_errors.hpp"
+#include "idle_threads.hpp"
 
 using namespace peristep::host;
 
 int main(int argc, char** argv) {
+  peristep::preferSleepingIdleThreads();  // before the FMU (and with it libgomp and OpenBLAS) is loaded
   CLI::App app{"peristep: drive the PeriStep peridynamic fracture component (an FMI 3.0 co-simulation FMU)"};
   app.set_version_flag("--version", PERISTEP_VERSION);
   app.require_subcommand(1);

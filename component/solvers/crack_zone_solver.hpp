@@ -71,7 +71,6 @@ class CrackZoneSolver {
   // Symmetric diagonal scaling D = |diag A|^-1/2 of the factorized matrix: the u rows are ~1e20 times the
   // theta rows, and MUMPS factorizes D A D (its own scaling is off when a Schur complement is asked for).
   std::vector<double> scale_;
-  CsrMatrix scaled_;
   SchurFactorization sparse_;
   DenseRowUpdateSolver dense_;
   std::vector<std::size_t> core_;

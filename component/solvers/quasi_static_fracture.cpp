@@ -227,14 +227,28 @@ std::vector<std::uint8_t> QuasiStaticFracture::intactAt(std::size_t broken) cons
   return intact;
 }
 
+std::vector<double> QuasiStaticFracture::zonePriority() const {
+  // First the points of the bonds broken since the last zone, the latest first: where the zone missed,
+  // damage goes on (the crack tip, a second crack, a corner). At h = 8 um this cut the factorizations
+  // from 28 to 23 (f = 0.2) and from 77 to 59 (f = 0.8) against the ratio alone (bench/README.md).
+  // Then the points closest to breaking under the last solution, ranked by stretch / s0 (< 1).
+  std::vector<double> priority = stretchRatios(bonds_, disc_->cloud, disc_->neighbours, u_);
+  const Neighbours& nb = disc_->neighbours;
+  const std::size_t first = factoredBroken_, end = brokenByLoading_.size();
+  for (std::size_t i = first; i < end; ++i) {
+    const std::size_t k = brokenByLoading_[i];
+    const double latest = 2.0 + static_cast<double>(i - first) / static_cast<double>(end - first);
+    for (std::size_t p : {nb.owner(k), static_cast<std::size_t>(nb.index[k])}) priority[p] = std::max(priority[p], latest);
+  }
+  return priority;
+}
+
 void QuasiStaticFracture::factorizeZone(LoadStepReport& report) {
-  // The zone holds the points closest to breaking under the last solution: the ratio stretch / s0
-  // ranks them, the size of the dense Schur complement bounds them.
+  // The size of the dense Schur complement bounds the zone.
   Stopwatch clock;
-  const std::vector<double> ratio = stretchRatios(bonds_, disc_->cloud, disc_->neighbours, u_);
   factoredA_ = system_.A;
   const std::size_t budget = std::min(kZoneUnknowns, static_cast<std::size_t>(disc_->dofs.size) / kZoneShare);
-  zone_->factorize(factoredA_, zone_->planCore(ratio, kZoneRatio, budget));
+  zone_->factorize(factoredA_, zone_->planCore(zonePriority(), kZoneRatio, budget));
   factoredBroken_ = denseBase_ = brokenByLoading_.size();
   hasFactorization_ = factorizationLive_ = matrixFactored_ = true;
   outsideZone_ = false;

@@ -95,6 +95,8 @@ class QuasiStaticFracture {
   void reassembleAround(const std::vector<std::size_t>& fresh, LoadStepReport& report);
   void addSprings(LpsSystem& s, std::span<const std::size_t> points, const std::vector<std::uint8_t>& stabilized) const;
   void factorizeZone(LoadStepReport& report);
+  // Per point, its claim to the next crack zone (CrackZoneSolver::planCore).
+  std::vector<double> zonePriority() const;
   void rebuildZone(LoadStepReport& report);
   void solveInZone(const std::vector<double>& rhs, LoadStepReport& report);
   void solveWithFactorization(const std::vector<double>& rhs, LoadStepReport& report);

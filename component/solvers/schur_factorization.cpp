@@ -83,7 +83,7 @@ void SchurFactorization::factorize(const CsrMatrix& A, const std::vector<std::in
   id.nnz = A.nonZeros();
   id.irn = rowIndex_.data();
   id.jcn = colIndex_.data();
-  id.a = const_cast<double*>(A.value.data());  // MUMPS reads A, it does not write it
+  id.a = const_cast<double*>(A.value.data());  // MUMPS reads A while it factorizes, it does not write it
   require(static_cast<std::int64_t>(position.size()) == A.rows, "mumps: one pivot position per unknown");
   std::vector<int> order(position.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = position[i] + 1;
@@ -105,6 +105,7 @@ void SchurFactorization::factorize(const CsrMatrix& A, const std::vector<std::in
   id.schur = z > 0 ? byRows.data() : nullptr;
   id.schur_lld = static_cast<int>(z);
   call(kFactorize, "numeric factorization");
+  id.a = nullptr;  // the solves do not read A (no iterative refinement or error analysis: ICNTL(10), (11) = 0)
   id.schur = nullptr;
   schur_.resize(z * z);
   for (std::size_t i = 0; i < z; ++i)

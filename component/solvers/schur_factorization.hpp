@@ -21,8 +21,8 @@ class SchurFactorization {
 
   // Factorizes A (square, its pattern fixed for the lifetime of this object) with `schurUnknowns`
   // (ascending, possibly empty) eliminated last, in the order `position` (the pivot position of each
-  // unknown, the Schur unknowns last). A must stay alive and unchanged until the next call. The analysis
-  // is repeated only when the set or the order changes.
+  // unknown, the Schur unknowns last). A is read during this call only. The analysis is repeated only
+  // when the set or the order changes.
   void factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
                  const std::vector<std::int32_t>& position);
 
