@@ -119,7 +119,7 @@ void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> cor
         scaled.value[k] *= scale_[static_cast<std::size_t>(r)] * scale_[static_cast<std::size_t>(A.col[k])];
     sparse_.factorize(scaled, zone_, pivotOrder());
   }
-  dense_.reset(sparse_.schurComplement());
+  dense_.reset(sparse_.takeSchurComplement());
   reduced_.resize(zone_.size());
   xZone_.resize(zone_.size());
 }

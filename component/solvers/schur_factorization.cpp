@@ -101,15 +101,14 @@ void SchurFactorization::factorize(const CsrMatrix& A, const std::vector<std::in
     analyzed_ = true;
   }
   const std::size_t z = schurUnknowns_.size();
-  std::vector<double> byRows(z * z);
-  id.schur = z > 0 ? byRows.data() : nullptr;
+  schur_.assign(z * z, 0.0);
+  id.schur = z > 0 ? schur_.data() : nullptr;
   id.schur_lld = static_cast<int>(z);
   call(kFactorize, "numeric factorization");
   id.a = nullptr;  // the solves do not read A (no iterative refinement or error analysis: ICNTL(10), (11) = 0)
   id.schur = nullptr;
-  schur_.resize(z * z);
-  for (std::size_t i = 0; i < z; ++i)
-    for (std::size_t j = 0; j < z; ++j) schur_[j * z + i] = byRows[i * z + j];
+  for (std::size_t i = 0; i < z; ++i)  // by rows -> column-major, in place
+    for (std::size_t j = i + 1; j < z; ++j) std::swap(schur_[i * z + j], schur_[j * z + i]);
 }
 
 void SchurFactorization::condense(std::span<const double> b, std::span<double> reduced) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/csr_matrix.hpp"
@@ -28,6 +29,7 @@ class SchurFactorization {
 
   // S, column-major, size |Z| x |Z|.
   const std::vector<double>& schurComplement() const { return schur_; }
+  std::vector<double> takeSchurComplement() { return std::move(schur_); }
 
   // First half of a solve: the reduced right-hand side b_Z - A_ZF A_FF^-1 b_F (size |Z|). The solver keeps
   // the forward-eliminated b for expand().
