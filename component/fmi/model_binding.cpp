@@ -5,6 +5,7 @@
 
 #include "core/errors.hpp"
 #include "core/memory.hpp"
+#include "fmi/enumerations.hpp"
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -43,25 +44,6 @@ FieldTransform fieldTransform(std::int64_t value) {
     case PERISTEP_FIELD_LOGNORMAL: return FieldTransform::Exponential;
   }
   throw InvalidInput("unknown field transform " + std::to_string(value));
-}
-
-TimeIntegratorKind integrator(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE: return TimeIntegratorKind::CentralDifference;
-    case PERISTEP_INTEGRATOR_ARKODE_ERK: return TimeIntegratorKind::ArkodeErk;
-    case PERISTEP_INTEGRATOR_CVODE_BDF: return TimeIntegratorKind::CvodeBdf;
-  }
-  throw InvalidInput("unknown time integrator " + std::to_string(value));
-}
-
-std::string solverName(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_LINEAR_SOLVER_UMFPACK: return "umfpack";
-    case PERISTEP_LINEAR_SOLVER_UMFPACK_AMD: return "umfpack-amd";
-    case PERISTEP_LINEAR_SOLVER_SPARSE_LU: return "sparselu";
-    case PERISTEP_LINEAR_SOLVER_BICGSTAB_ILUT: return "bicgstab-ilut";
-  }
-  throw InvalidInput("unknown linear solver " + std::to_string(value));
 }
 
 // A field of the model copied into an importer's array; the sizes agree by construction.
@@ -178,8 +160,8 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.transform = fieldTransform(v.scalar<std::int64_t>(PERISTEP_VR_FIELD_TRANSFORM));
   const auto xi = v.get<double>(PERISTEP_VR_XI);
   p.xi.assign(xi.begin(), xi.end());
-  p.linearSolver = solverName(v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER));
-  p.timeIntegrator = integrator(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
+  p.linearSolver = kindOf(kLinearSolverValues, v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER), "linear solver");
+  p.timeIntegrator = kindOf(kTimeIntegratorValues, v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR), "time integrator");
   p.internalTimeStep = v.scalar<double>(PERISTEP_VR_INTERNAL_TIME_STEP);
   p.integratorTolerance = v.scalar<double>(PERISTEP_VR_INTEGRATOR_TOLERANCE);
   p.glassYoungsModulus = v.scalar<double>(PERISTEP_VR_GLASS_YOUNGS_MODULUS);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fmi/enumerations.hpp"
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -483,12 +484,8 @@ const std::vector<EnumerationType>& enumerationTypes() {
        "How a side of the specimen is loaded",
        {{"free", PERISTEP_GRIP_FREE, "Traction-free: no collar beside the side"},
         {"held", PERISTEP_GRIP_HELD, "The collar beside the side moves rigidly by loadFactor * (gripUx, gripUy)"}}},
-      {"PeriStep.LinearSolver",
-       "Sparse solvers of the (u, theta) system",
-       {{"umfpack", PERISTEP_LINEAR_SOLVER_UMFPACK, "UMFPACK, 64-bit indices, METIS ordering"},
-        {"umfpackAmd", PERISTEP_LINEAR_SOLVER_UMFPACK_AMD, "UMFPACK with its default AMD/COLAMD ordering"},
-        {"sparseLU", PERISTEP_LINEAR_SOLVER_SPARSE_LU, "Eigen SparseLU"},
-        {"bicgstabIlut", PERISTEP_LINEAR_SOLVER_BICGSTAB_ILUT, "Eigen BiCGSTAB with an ILUT preconditioner"}}},
+      {"PeriStep.LinearSolver", "Sparse solvers of the (u, theta) system",
+       enumerationItems(kLinearSolverValues, kLinearSolverOptions)},
       {"PeriStep.Covariance",
        "Covariance kernels of the KL field",
        {{"exponential", PERISTEP_COVARIANCE_EXPONENTIAL, "s^2 exp(-r/l)"},
@@ -497,12 +494,8 @@ const std::vector<EnumerationType>& enumerationTypes() {
        "How the Gaussian field g becomes Young's modulus",
        {{"affine", PERISTEP_FIELD_AFFINE, "E = E0 (1 + g); a sample with E <= 0 anywhere is refused"},
         {"lognormal", PERISTEP_FIELD_LOGNORMAL, "E = E0 exp(g - var/2): positive for every xi, mean E0"}}},
-      {"PeriStep.TimeIntegrator",
-       "Time integrators of the dynamic scenes",
-       {{"centralDifference", PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE,
-         "Explicit central difference 001:(35)-(36), fixed step internalTimeStep"},
-        {"arkodeErk", PERISTEP_INTEGRATOR_ARKODE_ERK, "SUNDIALS ARKODE explicit adaptive Runge-Kutta"},
-        {"cvodeBdf", PERISTEP_INTEGRATOR_CVODE_BDF, "SUNDIALS CVODE BDF with a preconditioned Krylov solver (stiff)"}}},
+      {"PeriStep.TimeIntegrator", "Time integrators of the dynamic scenes",
+       enumerationItems(kTimeIntegratorValues, kTimeIntegratorOptions)},
   };
   return types;
 }

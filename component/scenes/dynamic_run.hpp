@@ -9,7 +9,7 @@
 namespace peristep {
 
 struct DynamicRunOptions {
-  std::string integrator = "central_difference";
+  std::string integrator = "centralDifference";
   IntegratorOptions options;     // options.timeStep defaults to the scene's when left at 0
   double endTime = 0;            // 0: the scene's
   double reportInterval = 2e-6;  // [s]

@@ -12,6 +12,7 @@
 #include "core/progress.hpp"
 #include "geometry/point_cloud.hpp"
 #include "scenes/specimen.hpp"
+#include "solvers/linear_solver_kind.hpp"
 #include "solvers/time_integrator_kind.hpp"
 
 namespace peristep {
@@ -47,7 +48,7 @@ struct SceneParameters {
   double poissonRatio = 0.3;
   double modulusContrast = 2.0;     // Composite: E(right)/E(left)
   std::vector<double> xi;           // standardized random coordinates (physical = xiScale * xi)
-  std::string linearSolver = "umfpack";
+  LinearSolverKind linearSolver = LinearSolverKind::Umfpack;
   double crystalFraction = 0.2;     // GlassCeramic: target crystal area fraction f
   // GlassCeramic: 0 = the microstructure realization of `seed`; n > 0 = the PCA field 000:(5.5) of n
   // realizations with xi.size() modes.
