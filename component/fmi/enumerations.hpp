@@ -14,6 +14,7 @@
 #include "core/option_table.hpp"
 #include "fmi/variables.hpp"
 #include "peristep.h"
+#include "random/kl_options.hpp"
 #include "solvers/linear_solver_kind.hpp"
 #include "solvers/time_integrator_kind.hpp"
 
@@ -36,6 +37,16 @@ inline constexpr std::array<EnumerationValue<TimeIntegratorKind>, 3> kTimeIntegr
     {PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE, TimeIntegratorKind::CentralDifference},
     {PERISTEP_INTEGRATOR_ARKODE_ERK, TimeIntegratorKind::ArkodeErk},
     {PERISTEP_INTEGRATOR_CVODE_BDF, TimeIntegratorKind::CvodeBdf},
+}};
+
+inline constexpr std::array<EnumerationValue<CovarianceKind>, 2> kCovarianceValues{{
+    {PERISTEP_COVARIANCE_EXPONENTIAL, CovarianceKind::Exponential},
+    {PERISTEP_COVARIANCE_GAUSSIAN, CovarianceKind::Gaussian},
+}};
+
+inline constexpr std::array<EnumerationValue<MaterialTransform>, 2> kFieldTransformValues{{
+    {PERISTEP_FIELD_AFFINE, MaterialTransform::Affine},
+    {PERISTEP_FIELD_LOGNORMAL, MaterialTransform::Positive},
 }};
 
 // The C++ value of an enumeration value; the variable table refuses other values when they are set, so

@@ -30,22 +30,6 @@ SceneId sceneId(std::int64_t value) {
   throw InvalidInput("unknown scene " + std::to_string(value));
 }
 
-Covariance covariance(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_COVARIANCE_EXPONENTIAL: return Covariance::Exponential;
-    case PERISTEP_COVARIANCE_GAUSSIAN: return Covariance::Gaussian;
-  }
-  throw InvalidInput("unknown covariance " + std::to_string(value));
-}
-
-FieldTransform fieldTransform(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_FIELD_AFFINE: return FieldTransform::Affine;
-    case PERISTEP_FIELD_LOGNORMAL: return FieldTransform::Exponential;
-  }
-  throw InvalidInput("unknown field transform " + std::to_string(value));
-}
-
 // A field of the model copied into an importer's array; the sizes agree by construction.
 void copyField(const std::vector<double>& field, std::span<double> out) {
   if (field.size() != out.size())
@@ -154,10 +138,10 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.modulusContrast = v.scalar<double>(PERISTEP_VR_MODULUS_CONTRAST);
   p.crystalFraction = v.scalar<double>(PERISTEP_VR_CRYSTAL_FRACTION);
   p.pcaRealizations = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_PCA_REALIZATIONS));
-  p.covariance = covariance(v.scalar<std::int64_t>(PERISTEP_VR_COVARIANCE));
+  p.covariance = kindOf(kCovarianceValues, v.scalar<std::int64_t>(PERISTEP_VR_COVARIANCE), "covariance");
   p.correlationLength = v.scalar<double>(PERISTEP_VR_CORRELATION_LENGTH);
   p.fieldStd = v.scalar<double>(PERISTEP_VR_FIELD_STD);
-  p.transform = fieldTransform(v.scalar<std::int64_t>(PERISTEP_VR_FIELD_TRANSFORM));
+  p.transform = kindOf(kFieldTransformValues, v.scalar<std::int64_t>(PERISTEP_VR_FIELD_TRANSFORM), "field transform");
   const auto xi = v.get<double>(PERISTEP_VR_XI);
   p.xi.assign(xi.begin(), xi.end());
   p.linearSolver = kindOf(kLinearSolverValues, v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER), "linear solver");

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "fmi/enumerations.hpp"
+#include "geometry/point_cloud.hpp"
+#include "models/poisson_ratio.hpp"
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -38,10 +40,10 @@ std::vector<Variable> makeTable() {
       {.name = "nx", .vr = PERISTEP_VR_NX, .type = T::UInt64, .causality = C::StructuralParameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Points per side in x (arrays [ny][nx] are images, x varying fastest)", .start = "33",
-       .min = Bound{2}, .max = Bound{65536}},
+       .min = Bound{kMinPointsPerSide}, .max = Bound{65536}},
       {.name = "ny", .vr = PERISTEP_VR_NY, .type = T::UInt64, .causality = C::StructuralParameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Points per side in y", .start = "33",
-       .min = Bound{2}, .max = Bound{65536}},
+       .min = Bound{kMinPointsPerSide}, .max = Bound{65536}},
       {.name = "nModes", .vr = PERISTEP_VR_NMODES, .type = T::UInt64, .causality = C::StructuralParameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Length of xi; at least the number of random coordinates of the scene (smooth 1, composite 2)",
@@ -65,11 +67,11 @@ std::vector<Variable> makeTable() {
        .min = Bound{0, true}},
       {.name = "deltaOverH", .vr = PERISTEP_VR_DELTA_OVER_H, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Peridynamic horizon over grid spacing, 1 <= delta/h <= 20", .start = "3", .min = Bound{1},
-       .max = Bound{20}},  // the collar is 2 delta wide: an unbounded horizon would overflow the point count
+       .description = "Peridynamic horizon over grid spacing, 1 <= delta/h <= 20", .start = "3",
+       .min = Bound{kMinDeltaOverH}, .max = Bound{kMaxDeltaOverH}},
       {.name = "poissonRatio", .vr = PERISTEP_VR_POISSON_RATIO, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Poisson's ratio (plane strain), -1 < nu < 0.5",
-       .start = "0.3", .min = Bound{-1, true}, .max = Bound{0.5, true}},
+       .start = "0.3", .min = Bound{kMinPoissonRatio, true}, .max = Bound{kMaxPoissonRatio, true}},
       {.name = "modulusContrast", .vr = PERISTEP_VR_MODULUS_CONTRAST, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Composite scene: Young's modulus right of x = 0 over left, > 0", .start = "2",
@@ -77,7 +79,7 @@ std::vector<Variable> makeTable() {
       {.name = "jitter", .vr = PERISTEP_VR_JITTER, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Random displacement of every point as a fraction of h, 0 <= jitter < 0.5", .start = "0",
-       .min = Bound{0}, .max = Bound{0.5, true}},
+       .min = Bound{0}, .max = Bound{kMaxJitter, true}},
       {.name = "seed", .vr = PERISTEP_VR_SEED, .type = T::UInt64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Seed of the point jitter", .start = "1"},
       {.name = "linearSolver", .vr = PERISTEP_VR_LINEAR_SOLVER, .type = T::Enumeration, .causality = C::Parameter,
@@ -311,7 +313,8 @@ std::vector<Variable> makeTable() {
       {.name = "materialPoissonRatio", .vr = PERISTEP_VR_MATERIAL_POISSON_RATIO, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: Poisson's ratio (plane strain) of each domain point, -1 < nu < 0.5",
-       .start = "0.25", .dimensions = image(), .min = Bound{-1, true}, .max = Bound{0.5, true}},
+       .start = "0.25", .dimensions = image(), .min = Bound{kMinPoissonRatio, true},
+       .max = Bound{kMaxPoissonRatio, true}},
       {.name = "materialFractureEnergy", .vr = PERISTEP_VR_MATERIAL_FRACTURE_ENERGY, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: fracture energy G of each domain point, > 0 (a bond breaks at the critical "
@@ -486,14 +489,10 @@ const std::vector<EnumerationType>& enumerationTypes() {
         {"held", PERISTEP_GRIP_HELD, "The collar beside the side moves rigidly by loadFactor * (gripUx, gripUy)"}}},
       {"PeriStep.LinearSolver", "Sparse solvers of the (u, theta) system",
        enumerationItems(kLinearSolverValues, kLinearSolverOptions)},
-      {"PeriStep.Covariance",
-       "Covariance kernels of the KL field",
-       {{"exponential", PERISTEP_COVARIANCE_EXPONENTIAL, "s^2 exp(-r/l)"},
-        {"gaussian", PERISTEP_COVARIANCE_GAUSSIAN, "s^2 exp(-r^2/l^2)"}}},
-      {"PeriStep.FieldTransform",
-       "How the Gaussian field g becomes Young's modulus",
-       {{"affine", PERISTEP_FIELD_AFFINE, "E = E0 (1 + g); a sample with E <= 0 anywhere is refused"},
-        {"lognormal", PERISTEP_FIELD_LOGNORMAL, "E = E0 exp(g - var/2): positive for every xi, mean E0"}}},
+      {"PeriStep.Covariance", "Covariance kernels of the KL field",
+       enumerationItems(kCovarianceValues, kCovarianceOptions)},
+      {"PeriStep.FieldTransform", "How the Gaussian field g becomes Young's modulus",
+       enumerationItems(kFieldTransformValues, kMaterialTransformOptions)},
       {"PeriStep.TimeIntegrator", "Time integrators of the dynamic scenes",
        enumerationItems(kTimeIntegratorValues, kTimeIntegratorOptions)},
   };

@@ -1,9 +1,10 @@
 #pragma once
-// One small interface over the time integrators of the semi-discrete system, chosen by name:
-//   "centralDifference"  explicit central difference 001:(35)-(36), fixed step, stability-checked
-//   "arkodeErk"          SUNDIALS ARKODE ERKStep, explicit adaptive Runge-Kutta
-//   "cvodeBdf"           SUNDIALS CVODE BDF (order <= 2 by default), Newton + matrix-free SPGMR with a
-//                         preconditioner built from the rest-state tangent: for stiff problems
+// One small interface over the time integrators of the semi-discrete system, chosen by TimeIntegratorKind
+// (solvers/time_integrator_kind.hpp, with their names):
+//   centralDifference  explicit central difference 001:(35)-(36), fixed step, stability-checked
+//   arkodeErk          SUNDIALS ARKODE ERKStep, explicit adaptive Runge-Kutta
+//   cvodeBdf           SUNDIALS CVODE BDF (order <= 2 by default), Newton + matrix-free SPGMR with a
+//                      preconditioner built from the rest-state tangent: for stiff problems
 #include <memory>
 #include <string>
 #include <string_view>
