@@ -15,21 +15,6 @@ namespace {
 using P = const ParameterValues&;
 using M = const SceneModel*;
 
-SceneId sceneId(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_SCENE_SMOOTH: return SceneId::Smooth;
-    case PERISTEP_SCENE_COMPOSITE: return SceneId::Composite;
-    case PERISTEP_SCENE_INTERFACE_CRACK: return SceneId::InterfaceCrack;
-    case PERISTEP_SCENE_GLASS_CERAMIC: return SceneId::GlassCeramic;
-    case PERISTEP_SCENE_KL_PLATE: return SceneId::KlPlate;
-    case PERISTEP_SCENE_PLEXIGLASS_CRACK: return SceneId::PlexiglassCrack;
-    case PERISTEP_SCENE_BENDING_ONE_NOTCH: return SceneId::BendingOneNotch;
-    case PERISTEP_SCENE_BENDING_TWO_NOTCHES: return SceneId::BendingTwoNotches;
-    case PERISTEP_SCENE_SPECIMEN: return SceneId::Specimen;
-  }
-  throw InvalidInput("unknown scene " + std::to_string(value));
-}
-
 // A field of the model copied into an importer's array; the sizes agree by construction.
 void copyField(const std::vector<double>& field, std::span<double> out) {
   if (field.size() != out.size())
@@ -126,7 +111,7 @@ const std::array<ComputedVariable, 32> kComputed{{
 
 SceneParameters sceneParameters(const ParameterValues& v) {
   SceneParameters p;
-  p.scene = sceneId(v.scalar<std::int64_t>(PERISTEP_VR_SCENE));
+  p.scene = kindOf(kSceneValues, v.scalar<std::int64_t>(PERISTEP_VR_SCENE), "scene");
   p.grid.nx = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_NX));
   p.grid.ny = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_NY));
   p.grid.Lx = v.scalar<double>(PERISTEP_VR_LX);

@@ -446,38 +446,7 @@ const Variable* findVariable(fmi3ValueReference vr) {
 
 const std::vector<EnumerationType>& enumerationTypes() {
   static const std::vector<EnumerationType> types{
-      {"PeriStep.Scene",
-       "Built-in scenes",
-       {{"smooth", PERISTEP_SCENE_SMOOTH,
-         "Smooth manufactured solution, one random coordinate (Fan et al., Test 1); quasi-static: the "
-         "DefaultExperiment fits"},
-        {"composite", PERISTEP_SCENE_COMPOSITE,
-         "Bimaterial composite, two random coordinates (Fan et al., Test 2); quasi-static: the "
-         "DefaultExperiment fits"},
-        {"interfaceCrack", PERISTEP_SCENE_INTERFACE_CRACK,
-         "Crack on a bimaterial interface, two random coordinates (Fan et al., Test 3); quasi-static: the "
-         "DefaultExperiment fits"},
-        {"glassCeramic", PERISTEP_SCENE_GLASS_CERAMIC,
-         "Pre-cracked glass-ceramic plate opened by loadDisplacement; microstructure from seed or its PCA field "
-         "(Fan et al., Sec. 5); quasi-static, any step size: the paper's plate is Lx = 800e-6 m, Ly = 400e-6 m "
-         "(e.g. nx = 51, ny = 26), opened in increments of 4e-9 m, one per step"},
-        {"plexiglassCrack", PERISTEP_SCENE_PLEXIGLASS_CRACK,
-         "Dynamic crack in a pre-cracked Plexiglass square, bottom strips pulled apart (Jha-Lipton, Sec. 6.1); "
-         "communication step 2e-6 s, stop time 34e-6 s (500 internal steps of 0.004 us per step)"},
-        {"bendingOneNotch", PERISTEP_SCENE_BENDING_ONE_NOTCH,
-         "Dynamic three-point bending of a beam with one pre-crack (Jha-Lipton, Sec. 6.2); communication step "
-         "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
-        {"bendingTwoNotches", PERISTEP_SCENE_BENDING_TWO_NOTCHES,
-         "Dynamic three-point bending of a beam with two pre-cracks (Jha-Lipton, Sec. 6.2); communication step "
-         "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
-        {"klPlate", PERISTEP_SCENE_KL_PLATE,
-         "Plate with a Karhunen-Loeve random Young's modulus (nModes coordinates), stretched by loadFactor; "
-         "quasi-static: the DefaultExperiment fits"},
-        {"specimen", PERISTEP_SCENE_SPECIMEN,
-         "The importer's specimen: plate Lx x Ly on the vertex grid, material maps materialYoungsModulus, "
-         "materialPoissonRatio, materialFractureEnergy, pre-cracks crackX0..crackY1, grips gripLeft..gripTop "
-         "moved by loadFactor; quasi-static brittle fracture (000 Sec. 3.3), every step breaks bonds until "
-         "equilibrium at its load"}}},
+      {"PeriStep.Scene", "Built-in scenes", enumerationItems(kSceneValues, kSceneOptions)},
       {"PeriStep.MaterialField",
        "What the specimen's Young's modulus map becomes",
        {{"map", PERISTEP_MATERIAL_MAP, "The map as given"},
