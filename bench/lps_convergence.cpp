@@ -49,7 +49,9 @@ std::variant<Options, int> parse(int argc, char** argv) {
   app.add_option("--levels", o.levels, "grid levels, comma separated")->delimiter(',')->capture_default_str();
   app.add_option("--delta-over-h", o.deltaOverH, "horizon delta/h")->capture_default_str();
   app.add_option("--jitter", o.jitter, "random displacement of the points, fraction of h")->capture_default_str();
-  app.add_option("--solver", o.solver, "sparse solver")->capture_default_str()->check(CLI::IsMember(linearSolverNames()));
+  app.add_option("--solver", o.solver, "sparse solver")
+      ->capture_default_str()
+      ->check(CLI::IsMember(linearSolverNames()));
   app.add_option("--csv", o.csv, "write the table as CSV to this file");
   if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
   return o;

@@ -24,7 +24,7 @@ struct Option {
 template <class Kind, std::size_t N>
 const Option<Kind>& option(const std::array<Option<Kind>, N>& table, Kind kind) {
   const auto it = std::find_if(table.begin(), table.end(), [kind](const Option<Kind>& o) { return o.kind == kind; });
-  if (it == table.end()) throw InvalidInput("internal error: an option missing from its table");
+  if (it == table.end()) throw SolverFailure("internal error: an option missing from its table");
   return *it;
 }
 

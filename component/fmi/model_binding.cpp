@@ -130,7 +130,8 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   const auto xi = v.get<double>(PERISTEP_VR_XI);
   p.xi.assign(xi.begin(), xi.end());
   p.linearSolver = kindOf(kLinearSolverValues, v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER), "linear solver");
-  p.timeIntegrator = kindOf(kTimeIntegratorValues, v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR), "time integrator");
+  p.timeIntegrator =
+      kindOf(kTimeIntegratorValues, v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR), "time integrator");
   p.internalTimeStep = v.scalar<double>(PERISTEP_VR_INTERNAL_TIME_STEP);
   p.integratorTolerance = v.scalar<double>(PERISTEP_VR_INTEGRATOR_TOLERANCE);
   p.glassYoungsModulus = v.scalar<double>(PERISTEP_VR_GLASS_YOUNGS_MODULUS);
