@@ -62,7 +62,7 @@ std::uint64_t fnv1a(std::uint64_t h, std::uint64_t word) {
 // Wall seconds of one numeric factorization of the specimen's initial matrix with a solver of its own:
 // the median of three, as the machine is shared.
 double oneFactorizationSeconds(const GlassCeramicSpecimen& g, const std::string& solverName) {
-  const std::unique_ptr<LinearSolver> solver = makeLinearSolver(solverName);
+  const std::unique_ptr<LinearSolver> solver = makeLinearSolver(linearSolverKind(solverName));
   const CsrMatrix& A = g.solver().matrix();
   solver->analyze(A);
   std::array<double, 3> seconds;
@@ -157,7 +157,7 @@ int main(int argc, char** argv) try {
   spec.grid.ny = static_cast<std::size_t>(std::lround(400.0 / hUm)) + 1;
   spec.crystalFraction = fraction;
   spec.seed = seed;
-  spec.linearSolver = solver;
+  spec.linearSolver = linearSolverKind(solver);
   if (reference) driver = "reference";
   spec.reuse = drivers.at(driver);
   if (spec.reuse != FactorizationReuse::CrackZone) {

@@ -26,14 +26,13 @@ int main(int argc, char** argv) try {
   app.add_option("--dense-up-to", denseUpTo, "run the dense solver up to this many points")->capture_default_str();
   app.add_option("--kernel", kernel, "covariance kernel")
       ->capture_default_str()
-      ->check(CLI::IsMember({"exponential", "gaussian"}));
+      ->check(CLI::IsMember(optionNames(kCovarianceOptions)));
   app.add_option("--l", spec.correlationLength, "correlation length")->capture_default_str();
   app.add_option("--modes", spec.modes, "number of modes")->capture_default_str();
   if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
-  spec.kind = kernel == "gaussian" ? CovarianceKind::Gaussian : CovarianceKind::Exponential;
-  std::printf("# KL, %s kernel, l = %g, k = %zu, randomized p = %zu, q = %zu\n",
-              spec.kind == CovarianceKind::Gaussian ? "gaussian" : "exponential", spec.correlationLength, spec.modes,
-              spec.oversampling, spec.powerIterations);
+  spec.kind = optionKind(kCovarianceOptions, kernel, "covariance kernel");
+  std::printf("# KL, %s kernel, l = %g, k = %zu, randomized p = %zu, q = %zu\n", kernel.c_str(),
+              spec.correlationLength, spec.modes, spec.oversampling, spec.powerIterations);
   std::printf("%7s %9s %12s %10s %14s\n", "points", "dense s", "randomized s", "retained", "max rel diff");
   for (std::size_t side : sides) {
     const double h = 1.0 / static_cast<double>(side);

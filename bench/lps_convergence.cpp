@@ -2,7 +2,7 @@
 //
 //   lps_convergence [--scene smooth|composite] [--nu 0.3] [--xi 0 [--xi2 0]] [--contrast 2]
 //                   [--levels 8,16,32,64,128,256] [--delta-over-h 3] [--jitter 0]
-//                   [--solver umfpack|umfpack-metis|sparselu|bicgstab-ilut] [--csv out.csv]
+//                   [--solver umfpack|umfpackAmd|sparseLU|bicgstabIlut] [--csv out.csv]
 //
 // Test 1 (smooth, 000 Sec. 4.1) runs on [-1/2,1/2]^2 with h = 1/level; Test 2 (composite, 000 Sec. 4.2)
 // on [-pi/2,pi/2]^2 with h = pi/level. Per level it prints h, points, unknowns, L2 error, observed rate,
@@ -49,7 +49,9 @@ std::variant<Options, int> parse(int argc, char** argv) {
   app.add_option("--levels", o.levels, "grid levels, comma separated")->delimiter(',')->capture_default_str();
   app.add_option("--delta-over-h", o.deltaOverH, "horizon delta/h")->capture_default_str();
   app.add_option("--jitter", o.jitter, "random displacement of the points, fraction of h")->capture_default_str();
-  app.add_option("--solver", o.solver, "umfpack, umfpack-metis, sparselu or bicgstab-ilut")->capture_default_str();
+  app.add_option("--solver", o.solver, "sparse solver")
+      ->capture_default_str()
+      ->check(CLI::IsMember(linearSolverNames()));
   app.add_option("--csv", o.csv, "write the table as CSV to this file");
   if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
   return o;
@@ -88,7 +90,7 @@ int main(int argc, char** argv) try {
     grid.deltaOverH = o.deltaOverH;
     grid.jitter = o.jitter;
     auto disc = std::make_shared<const LpsDiscretization>(LpsDiscretization::build(grid));
-    StaticLps lps(disc, *scene, o.solver);
+    StaticLps lps(disc, *scene, linearSolverKind(o.solver));
     lps.solve();
     const double seconds = total.seconds();
     const double error = lps.errorL2(), h = disc->cloud.h;

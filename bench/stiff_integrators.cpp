@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     o.timeStep = fraction * limit;
     char setting[64];
     std::snprintf(setting, sizeof setting, "dt = %.2f x limit", fraction);
-    runs.push_back(run(contrast, "central_difference", o, setting));
+    runs.push_back(run(contrast, "centralDifference", o, setting));
   };
   cd(0.25);
   const Run reference = runs.back();
@@ -88,11 +88,11 @@ int main(int argc, char** argv) {
   char setting[64];
   for (const double tol : {1e-4, 1e-6, 1e-8}) {
     std::snprintf(setting, sizeof setting, "rtol = %.0e", tol);
-    runs.push_back(run(contrast, "arkode_erk", tolerances(tol), setting));
+    runs.push_back(run(contrast, "arkodeErk", tolerances(tol), setting));
   }
   for (const double tol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
     std::snprintf(setting, sizeof setting, "rtol = %.0e", tol);
-    runs.push_back(run(contrast, "cvode_bdf", tolerances(tol), setting));
+    runs.push_back(run(contrast, "cvodeBdf", tolerances(tol), setting));
   }
   std::FILE* csv = csvPath.empty() ? nullptr : std::fopen(csvPath.c_str(), "w");
   if (csv) std::fprintf(csv, "method,setting,steps,rhs,jv,linear_iterations,factorizations,seconds,rel_error\n");

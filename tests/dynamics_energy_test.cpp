@@ -78,7 +78,7 @@ TEST_CASE("linear momentum is conserved where no boundary acts", "[dynamics]") {
     return std::array<double, 3>{px, py, scale};
   };
   const auto p0 = momentum(problem.initialVelocity().data());
-  for (const std::string name : {"central_difference", "arkode_erk"}) {
+  for (const std::string name : {"centralDifference", "arkodeErk"}) {
     IntegratorOptions io;
     io.timeStep = 0.5 * estimateStabilityLimit(problem).criticalStep;
     auto integrator = makeTimeIntegrator(name, problem, io);

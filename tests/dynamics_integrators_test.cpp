@@ -41,11 +41,11 @@ TEST_CASE("integrators are chosen by name and unknown names are refused", "[dyna
     makeTimeIntegrator("leapfrog", *scene.problem, o);
     FAIL("an unknown integrator was accepted");
   } catch (const InvalidInput& e) {
-    CHECK_THAT(e.what(), Catch::Contains("cvode_bdf"));
+    CHECK_THAT(e.what(), Catch::Contains("cvodeBdf"));
   }
   o.relativeTolerance = -1;
-  CHECK_THROWS_AS(makeTimeIntegrator("arkode_erk", *scene.problem, o), InvalidInput);
-  CHECK_THROWS_AS(makeTimeIntegrator("cvode_bdf", *scene.problem, o), InvalidInput);
+  CHECK_THROWS_AS(makeTimeIntegrator("arkodeErk", *scene.problem, o), InvalidInput);
+  CHECK_THROWS_AS(makeTimeIntegrator("cvodeBdf", *scene.problem, o), InvalidInput);
 }
 
 TEST_CASE("central difference, ARKODE ERK and CVODE BDF agree on the same semi-discrete system", "[dynamics]") {
@@ -53,7 +53,7 @@ TEST_CASE("central difference, ARKODE ERK and CVODE BDF agree on the same semi-d
   DynamicProblem& problem = *scene.problem;
   IntegratorOptions ref;
   ref.timeStep = 0.1 * estimateStabilityLimit(problem).criticalStep;
-  auto cd = makeTimeIntegrator("central_difference", problem, ref);
+  auto cd = makeTimeIntegrator("centralDifference", problem, ref);
   cd->advanceTo(scene.endTime);
   const std::vector<double> u(cd->displacement(), cd->displacement() + problem.dofs());
   const double work = cd->externalWork();
@@ -63,7 +63,7 @@ TEST_CASE("central difference, ARKODE ERK and CVODE BDF agree on the same semi-d
   erk.relativeTolerance = 1e-9;
   erk.absoluteTolerance = 1e-16;
   erk.velocityTolerance = 1e-10;
-  auto rk = makeTimeIntegrator("arkode_erk", problem, erk);
+  auto rk = makeTimeIntegrator("arkodeErk", problem, erk);
   rk->advanceTo(scene.endTime);
   CHECK(rk->time() == scene.endTime);
   CHECK(relativeL2(rk->displacement(), u) < 1e-4);
@@ -71,7 +71,7 @@ TEST_CASE("central difference, ARKODE ERK and CVODE BDF agree on the same semi-d
 
   IntegratorOptions bdf = erk;
   bdf.relativeTolerance = 1e-7;
-  auto implicit = makeTimeIntegrator("cvode_bdf", problem, bdf);
+  auto implicit = makeTimeIntegrator("cvodeBdf", problem, bdf);
   implicit->advanceTo(scene.endTime);
   CHECK(relativeL2(implicit->displacement(), u) < 1e-3);
   CHECK(implicit->externalWork() == Approx(work).epsilon(1e-3));

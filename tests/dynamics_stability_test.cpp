@@ -65,7 +65,7 @@ TEST_CASE("a time step above the stability limit is refused, or substepped on re
   IntegratorOptions o;
   o.timeStep = 1.05 * limit;
   try {
-    makeTimeIntegrator("central_difference", *c.problem, o);
+    makeTimeIntegrator("centralDifference", *c.problem, o);
     FAIL("a step above the limit was accepted");
   } catch (const InvalidInput& e) {
     CHECK_THAT(e.what(), Catch::Contains("stability limit"));

@@ -29,7 +29,7 @@ TEST_CASE("stiff inclusions (contrast 1e3): CVODE BDF reaches the explicit refer
   o.relativeTolerance = 1e-5;
   o.absoluteTolerance = 1e-11;  // displacements ~1e-6 m
   o.velocityTolerance = 1e-6;   // velocities ~0.1 m/s
-  auto bdf = makeTimeIntegrator("cvode_bdf", *scene.problem, o);
+  auto bdf = makeTimeIntegrator("cvodeBdf", *scene.problem, o);
   bdf->advanceTo(spec.endTime);
   double d = 0, n = 0;
   for (std::size_t i = 0; i < uRef.size(); ++i) {

@@ -28,7 +28,7 @@ TEST_CASE("the integrators leave the caller's floating-point mode as they found 
   DynamicProblem problem(m, m.material().density);
   problem.setInitialState(randomField(2 * c.size(), 1e-6, 3), std::vector<double>(2 * c.size(), 0.0));
   const unsigned before = _mm_getcsr();
-  for (const std::string name : {"central_difference", "arkode_erk", "cvode_bdf"}) {
+  for (const std::string name : {"centralDifference", "arkodeErk", "cvodeBdf"}) {
     IntegratorOptions io;
     io.timeStep = 0.5 * estimateStabilityLimit(problem).criticalStep;
     auto integrator = makeTimeIntegrator(name, problem, io);

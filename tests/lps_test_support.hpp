@@ -18,7 +18,8 @@ inline GridSpec squareGrid(int level, double side, double deltaOverH = 3.0, doub
   return g;
 }
 
-inline double levelError(const ElasticScene& scene, const GridSpec& grid, const std::string& solver = "umfpack") {
+inline double levelError(const ElasticScene& scene, const GridSpec& grid,
+                         LinearSolverKind solver = LinearSolverKind::Umfpack) {
   auto disc = std::make_shared<const LpsDiscretization>(LpsDiscretization::build(grid));
   StaticLps lps(disc, scene, solver);
   lps.solve();

@@ -12,7 +12,7 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-SceneParameters klPlate(double xi0, FieldTransform t) {
+SceneParameters klPlate(double xi0, MaterialTransform t) {
   SceneParameters p;
   p.scene = SceneId::KlPlate;
   p.grid = GridSpec{17, 17, 1.0, 1.0, 3.0};
@@ -46,13 +46,13 @@ TEST_CASE("random coordinates: each scene declares its laws and leaves the rest 
 TEST_CASE("KL plate: a tail coordinate that makes E non-positive is refused unless the field is lognormal",
           "[random]") {
   try {
-    SceneModel refused(klPlate(-8.0, FieldTransform::Affine));
+    SceneModel refused(klPlate(-8.0, MaterialTransform::Affine));
     FAIL("an affine field with E <= 0 was accepted");
   } catch (const InvalidInput& e) {
     CHECK_THAT(e.what(), Contains("<= 0 at point (x, y)"));
     CHECK_THAT(e.what(), Contains("lognormal"));
   }
-  SceneModel accepted(klPlate(-8.0, FieldTransform::Exponential));
+  SceneModel accepted(klPlate(-8.0, MaterialTransform::Positive));
   for (double E : accepted.youngsModulus()) CHECK(E > 0);
   accepted.advance(1.0);
   for (double u : accepted.uy()) CHECK(std::isfinite(u));
@@ -61,7 +61,7 @@ TEST_CASE("KL plate: a tail coordinate that makes E non-positive is refused unle
 
   // A moderate coordinate is fine either way, and the affine field is 1 + g: its mean over the plate
   // stays near 1 and it varies (the modes are not constant).
-  SceneModel moderate(klPlate(1.0, FieldTransform::Affine));
+  SceneModel moderate(klPlate(1.0, MaterialTransform::Affine));
   double lo = 1e300, hi = -1e300;
   for (double E : moderate.youngsModulus()) lo = std::min(lo, E), hi = std::max(hi, E);
   CHECK(lo > 0);

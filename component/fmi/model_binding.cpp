@@ -5,6 +5,7 @@
 
 #include "core/errors.hpp"
 #include "core/memory.hpp"
+#include "fmi/enumerations.hpp"
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -13,56 +14,6 @@ namespace {
 
 using P = const ParameterValues&;
 using M = const SceneModel*;
-
-SceneId sceneId(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_SCENE_SMOOTH: return SceneId::Smooth;
-    case PERISTEP_SCENE_COMPOSITE: return SceneId::Composite;
-    case PERISTEP_SCENE_INTERFACE_CRACK: return SceneId::InterfaceCrack;
-    case PERISTEP_SCENE_GLASS_CERAMIC: return SceneId::GlassCeramic;
-    case PERISTEP_SCENE_KL_PLATE: return SceneId::KlPlate;
-    case PERISTEP_SCENE_PLEXIGLASS_CRACK: return SceneId::PlexiglassCrack;
-    case PERISTEP_SCENE_BENDING_ONE_NOTCH: return SceneId::BendingOneNotch;
-    case PERISTEP_SCENE_BENDING_TWO_NOTCHES: return SceneId::BendingTwoNotches;
-    case PERISTEP_SCENE_SPECIMEN: return SceneId::Specimen;
-  }
-  throw InvalidInput("unknown scene " + std::to_string(value));
-}
-
-Covariance covariance(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_COVARIANCE_EXPONENTIAL: return Covariance::Exponential;
-    case PERISTEP_COVARIANCE_GAUSSIAN: return Covariance::Gaussian;
-  }
-  throw InvalidInput("unknown covariance " + std::to_string(value));
-}
-
-FieldTransform fieldTransform(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_FIELD_AFFINE: return FieldTransform::Affine;
-    case PERISTEP_FIELD_LOGNORMAL: return FieldTransform::Exponential;
-  }
-  throw InvalidInput("unknown field transform " + std::to_string(value));
-}
-
-TimeIntegratorKind integrator(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE: return TimeIntegratorKind::CentralDifference;
-    case PERISTEP_INTEGRATOR_ARKODE_ERK: return TimeIntegratorKind::ArkodeErk;
-    case PERISTEP_INTEGRATOR_CVODE_BDF: return TimeIntegratorKind::CvodeBdf;
-  }
-  throw InvalidInput("unknown time integrator " + std::to_string(value));
-}
-
-std::string solverName(std::int64_t value) {
-  switch (value) {
-    case PERISTEP_LINEAR_SOLVER_UMFPACK: return "umfpack";
-    case PERISTEP_LINEAR_SOLVER_UMFPACK_AMD: return "umfpack-amd";
-    case PERISTEP_LINEAR_SOLVER_SPARSE_LU: return "sparselu";
-    case PERISTEP_LINEAR_SOLVER_BICGSTAB_ILUT: return "bicgstab-ilut";
-  }
-  throw InvalidInput("unknown linear solver " + std::to_string(value));
-}
 
 // A field of the model copied into an importer's array; the sizes agree by construction.
 void copyField(const std::vector<double>& field, std::span<double> out) {
@@ -160,7 +111,7 @@ const std::array<ComputedVariable, 32> kComputed{{
 
 SceneParameters sceneParameters(const ParameterValues& v) {
   SceneParameters p;
-  p.scene = sceneId(v.scalar<std::int64_t>(PERISTEP_VR_SCENE));
+  p.scene = kindOf(kSceneValues, v.scalar<std::int64_t>(PERISTEP_VR_SCENE), "scene");
   p.grid.nx = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_NX));
   p.grid.ny = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_NY));
   p.grid.Lx = v.scalar<double>(PERISTEP_VR_LX);
@@ -172,14 +123,15 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.modulusContrast = v.scalar<double>(PERISTEP_VR_MODULUS_CONTRAST);
   p.crystalFraction = v.scalar<double>(PERISTEP_VR_CRYSTAL_FRACTION);
   p.pcaRealizations = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_PCA_REALIZATIONS));
-  p.covariance = covariance(v.scalar<std::int64_t>(PERISTEP_VR_COVARIANCE));
+  p.covariance = kindOf(kCovarianceValues, v.scalar<std::int64_t>(PERISTEP_VR_COVARIANCE), "covariance");
   p.correlationLength = v.scalar<double>(PERISTEP_VR_CORRELATION_LENGTH);
   p.fieldStd = v.scalar<double>(PERISTEP_VR_FIELD_STD);
-  p.transform = fieldTransform(v.scalar<std::int64_t>(PERISTEP_VR_FIELD_TRANSFORM));
+  p.transform = kindOf(kFieldTransformValues, v.scalar<std::int64_t>(PERISTEP_VR_FIELD_TRANSFORM), "field transform");
   const auto xi = v.get<double>(PERISTEP_VR_XI);
   p.xi.assign(xi.begin(), xi.end());
-  p.linearSolver = solverName(v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER));
-  p.timeIntegrator = integrator(v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR));
+  p.linearSolver = kindOf(kLinearSolverValues, v.scalar<std::int64_t>(PERISTEP_VR_LINEAR_SOLVER), "linear solver");
+  p.timeIntegrator =
+      kindOf(kTimeIntegratorValues, v.scalar<std::int64_t>(PERISTEP_VR_TIME_INTEGRATOR), "time integrator");
   p.internalTimeStep = v.scalar<double>(PERISTEP_VR_INTERNAL_TIME_STEP);
   p.integratorTolerance = v.scalar<double>(PERISTEP_VR_INTEGRATOR_TOLERANCE);
   p.glassYoungsModulus = v.scalar<double>(PERISTEP_VR_GLASS_YOUNGS_MODULUS);

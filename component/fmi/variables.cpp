@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "fmi/enumerations.hpp"
+#include "geometry/point_cloud.hpp"
+#include "models/poisson_ratio.hpp"
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -37,10 +40,10 @@ std::vector<Variable> makeTable() {
       {.name = "nx", .vr = PERISTEP_VR_NX, .type = T::UInt64, .causality = C::StructuralParameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Points per side in x (arrays [ny][nx] are images, x varying fastest)", .start = "33",
-       .min = Bound{2}, .max = Bound{65536}},
+       .min = Bound{kMinPointsPerSide}, .max = Bound{65536}},
       {.name = "ny", .vr = PERISTEP_VR_NY, .type = T::UInt64, .causality = C::StructuralParameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Points per side in y", .start = "33",
-       .min = Bound{2}, .max = Bound{65536}},
+       .min = Bound{kMinPointsPerSide}, .max = Bound{65536}},
       {.name = "nModes", .vr = PERISTEP_VR_NMODES, .type = T::UInt64, .causality = C::StructuralParameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Length of xi; at least the number of random coordinates of the scene (smooth 1, composite 2)",
@@ -64,11 +67,11 @@ std::vector<Variable> makeTable() {
        .min = Bound{0, true}},
       {.name = "deltaOverH", .vr = PERISTEP_VR_DELTA_OVER_H, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
-       .description = "Peridynamic horizon over grid spacing, 1 <= delta/h <= 20", .start = "3", .min = Bound{1},
-       .max = Bound{20}},  // the collar is 2 delta wide: an unbounded horizon would overflow the point count
+       .description = "Peridynamic horizon over grid spacing, 1 <= delta/h <= 20", .start = "3",
+       .min = Bound{kMinDeltaOverH}, .max = Bound{kMaxDeltaOverH}},
       {.name = "poissonRatio", .vr = PERISTEP_VR_POISSON_RATIO, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Poisson's ratio (plane strain), -1 < nu < 0.5",
-       .start = "0.3", .min = Bound{-1, true}, .max = Bound{0.5, true}},
+       .start = "0.3", .min = Bound{kMinPoissonRatio, true}, .max = Bound{kMaxPoissonRatio, true}},
       {.name = "modulusContrast", .vr = PERISTEP_VR_MODULUS_CONTRAST, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Composite scene: Young's modulus right of x = 0 over left, > 0", .start = "2",
@@ -76,7 +79,7 @@ std::vector<Variable> makeTable() {
       {.name = "jitter", .vr = PERISTEP_VR_JITTER, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Random displacement of every point as a fraction of h, 0 <= jitter < 0.5", .start = "0",
-       .min = Bound{0}, .max = Bound{0.5, true}},
+       .min = Bound{0}, .max = Bound{kMaxJitter, true}},
       {.name = "seed", .vr = PERISTEP_VR_SEED, .type = T::UInt64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Seed of the point jitter", .start = "1"},
       {.name = "linearSolver", .vr = PERISTEP_VR_LINEAR_SOLVER, .type = T::Enumeration, .causality = C::Parameter,
@@ -310,7 +313,8 @@ std::vector<Variable> makeTable() {
       {.name = "materialPoissonRatio", .vr = PERISTEP_VR_MATERIAL_POISSON_RATIO, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: Poisson's ratio (plane strain) of each domain point, -1 < nu < 0.5",
-       .start = "0.25", .dimensions = image(), .min = Bound{-1, true}, .max = Bound{0.5, true}},
+       .start = "0.25", .dimensions = image(), .min = Bound{kMinPoissonRatio, true},
+       .max = Bound{kMaxPoissonRatio, true}},
       {.name = "materialFractureEnergy", .vr = PERISTEP_VR_MATERIAL_FRACTURE_ENERGY, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: fracture energy G of each domain point, > 0 (a bond breaks at the critical "
@@ -442,38 +446,7 @@ const Variable* findVariable(fmi3ValueReference vr) {
 
 const std::vector<EnumerationType>& enumerationTypes() {
   static const std::vector<EnumerationType> types{
-      {"PeriStep.Scene",
-       "Built-in scenes",
-       {{"smooth", PERISTEP_SCENE_SMOOTH,
-         "Smooth manufactured solution, one random coordinate (Fan et al., Test 1); quasi-static: the "
-         "DefaultExperiment fits"},
-        {"composite", PERISTEP_SCENE_COMPOSITE,
-         "Bimaterial composite, two random coordinates (Fan et al., Test 2); quasi-static: the "
-         "DefaultExperiment fits"},
-        {"interfaceCrack", PERISTEP_SCENE_INTERFACE_CRACK,
-         "Crack on a bimaterial interface, two random coordinates (Fan et al., Test 3); quasi-static: the "
-         "DefaultExperiment fits"},
-        {"glassCeramic", PERISTEP_SCENE_GLASS_CERAMIC,
-         "Pre-cracked glass-ceramic plate opened by loadDisplacement; microstructure from seed or its PCA field "
-         "(Fan et al., Sec. 5); quasi-static, any step size: the paper's plate is Lx = 800e-6 m, Ly = 400e-6 m "
-         "(e.g. nx = 51, ny = 26), opened in increments of 4e-9 m, one per step"},
-        {"plexiglassCrack", PERISTEP_SCENE_PLEXIGLASS_CRACK,
-         "Dynamic crack in a pre-cracked Plexiglass square, bottom strips pulled apart (Jha-Lipton, Sec. 6.1); "
-         "communication step 2e-6 s, stop time 34e-6 s (500 internal steps of 0.004 us per step)"},
-        {"bendingOneNotch", PERISTEP_SCENE_BENDING_ONE_NOTCH,
-         "Dynamic three-point bending of a beam with one pre-crack (Jha-Lipton, Sec. 6.2); communication step "
-         "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
-        {"bendingTwoNotches", PERISTEP_SCENE_BENDING_TWO_NOTCHES,
-         "Dynamic three-point bending of a beam with two pre-cracks (Jha-Lipton, Sec. 6.2); communication step "
-         "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
-        {"klPlate", PERISTEP_SCENE_KL_PLATE,
-         "Plate with a Karhunen-Loeve random Young's modulus (nModes coordinates), stretched by loadFactor; "
-         "quasi-static: the DefaultExperiment fits"},
-        {"specimen", PERISTEP_SCENE_SPECIMEN,
-         "The importer's specimen: plate Lx x Ly on the vertex grid, material maps materialYoungsModulus, "
-         "materialPoissonRatio, materialFractureEnergy, pre-cracks crackX0..crackY1, grips gripLeft..gripTop "
-         "moved by loadFactor; quasi-static brittle fracture (000 Sec. 3.3), every step breaks bonds until "
-         "equilibrium at its load"}}},
+      {"PeriStep.Scene", "Built-in scenes", enumerationItems(kSceneValues, kSceneOptions)},
       {"PeriStep.MaterialField",
        "What the specimen's Young's modulus map becomes",
        {{"map", PERISTEP_MATERIAL_MAP, "The map as given"},
@@ -483,26 +456,14 @@ const std::vector<EnumerationType>& enumerationTypes() {
        "How a side of the specimen is loaded",
        {{"free", PERISTEP_GRIP_FREE, "Traction-free: no collar beside the side"},
         {"held", PERISTEP_GRIP_HELD, "The collar beside the side moves rigidly by loadFactor * (gripUx, gripUy)"}}},
-      {"PeriStep.LinearSolver",
-       "Sparse solvers of the (u, theta) system",
-       {{"umfpack", PERISTEP_LINEAR_SOLVER_UMFPACK, "UMFPACK, 64-bit indices, METIS ordering"},
-        {"umfpackAmd", PERISTEP_LINEAR_SOLVER_UMFPACK_AMD, "UMFPACK with its default AMD/COLAMD ordering"},
-        {"sparseLU", PERISTEP_LINEAR_SOLVER_SPARSE_LU, "Eigen SparseLU"},
-        {"bicgstabIlut", PERISTEP_LINEAR_SOLVER_BICGSTAB_ILUT, "Eigen BiCGSTAB with an ILUT preconditioner"}}},
-      {"PeriStep.Covariance",
-       "Covariance kernels of the KL field",
-       {{"exponential", PERISTEP_COVARIANCE_EXPONENTIAL, "s^2 exp(-r/l)"},
-        {"gaussian", PERISTEP_COVARIANCE_GAUSSIAN, "s^2 exp(-r^2/l^2)"}}},
-      {"PeriStep.FieldTransform",
-       "How the Gaussian field g becomes Young's modulus",
-       {{"affine", PERISTEP_FIELD_AFFINE, "E = E0 (1 + g); a sample with E <= 0 anywhere is refused"},
-        {"lognormal", PERISTEP_FIELD_LOGNORMAL, "E = E0 exp(g - var/2): positive for every xi, mean E0"}}},
-      {"PeriStep.TimeIntegrator",
-       "Time integrators of the dynamic scenes",
-       {{"centralDifference", PERISTEP_INTEGRATOR_CENTRAL_DIFFERENCE,
-         "Explicit central difference 001:(35)-(36), fixed step internalTimeStep"},
-        {"arkodeErk", PERISTEP_INTEGRATOR_ARKODE_ERK, "SUNDIALS ARKODE explicit adaptive Runge-Kutta"},
-        {"cvodeBdf", PERISTEP_INTEGRATOR_CVODE_BDF, "SUNDIALS CVODE BDF with a preconditioned Krylov solver (stiff)"}}},
+      {"PeriStep.LinearSolver", "Sparse solvers of the (u, theta) system",
+       enumerationItems(kLinearSolverValues, kLinearSolverOptions)},
+      {"PeriStep.Covariance", "Covariance kernels of the KL field",
+       enumerationItems(kCovarianceValues, kCovarianceOptions)},
+      {"PeriStep.FieldTransform", "How the Gaussian field g becomes Young's modulus",
+       enumerationItems(kFieldTransformValues, kMaterialTransformOptions)},
+      {"PeriStep.TimeIntegrator", "Time integrators of the dynamic scenes",
+       enumerationItems(kTimeIntegratorValues, kTimeIntegratorOptions)},
   };
   return types;
 }

@@ -5,26 +5,35 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/number_text.hpp"
 
 namespace peristep {
 
 void validateHorizon(double deltaOverH) {
-  require(std::isfinite(deltaOverH) && deltaOverH >= 1.0,
-          "horizon smaller than the grid spacing: deltaOverH must be >= 1 (got " + std::to_string(deltaOverH) + ")");
-  require(deltaOverH <= 20.0, "deltaOverH must be <= 20 (got " + std::to_string(deltaOverH) + ")");
+  require(std::isfinite(deltaOverH) && deltaOverH >= kMinDeltaOverH,
+          "horizon smaller than the grid spacing: deltaOverH must be >= " + numberText(kMinDeltaOverH) + " (got " +
+              numberText(deltaOverH) + ")");
+  require(deltaOverH <= kMaxDeltaOverH,
+          "deltaOverH must be <= " + numberText(kMaxDeltaOverH) + " (got " + numberText(deltaOverH) + ")");
 }
 
-void validate(const GridSpec& s) {
-  require(s.nx >= 2 && s.ny >= 2, "empty domain: nx and ny must both be at least 2 (got nx = " +
+void validate(const GridSpec& s, GridLayout layout) {
+  require(s.nx >= kMinPointsPerSide && s.ny >= kMinPointsPerSide,
+          "empty domain: nx and ny must both be at least " + std::to_string(kMinPointsPerSide) + " (got nx = " +
                                       std::to_string(s.nx) + ", ny = " + std::to_string(s.ny) + ")");
   require(std::isfinite(s.Lx) && std::isfinite(s.Ly) && s.Lx > 0 && s.Ly > 0,
           "empty domain: Lx and Ly must be positive and finite");
-  const double hx = s.Lx / static_cast<double>(s.nx - 1), hy = s.Ly / static_cast<double>(s.ny - 1);
-  require(std::abs(hx - hy) <= 1e-9 * hx, "grid spacing must be uniform: Lx/(nx-1) = " + std::to_string(hx) +
-                                              " but Ly/(ny-1) = " + std::to_string(hy));
+  const bool cells = layout == GridLayout::CellCentred;
+  const double intervals = cells ? 0.0 : 1.0;
+  const double hx = s.Lx / (static_cast<double>(s.nx) - intervals), hy = s.Ly / (static_cast<double>(s.ny) - intervals);
+  require(std::abs(hx - hy) <= 1e-9 * hx,
+          cells ? "grid spacing must be uniform: the dynamic scenes use cell-centred lattices with h = Lx/nx = Ly/ny, "
+                  "but Lx/nx = " + std::to_string(hx) + " m and Ly/ny = " + std::to_string(hy) + " m"
+                : "grid spacing must be uniform: Lx/(nx-1) = " + std::to_string(hx) + " but Ly/(ny-1) = " +
+                      std::to_string(hy));
   validateHorizon(s.deltaOverH);
-  require(std::isfinite(s.jitter) && s.jitter >= 0.0 && s.jitter < 0.5,
-          "jitter must lie in [0, 0.5) grid spacings (got " + std::to_string(s.jitter) + ")");
+  require(std::isfinite(s.jitter) && s.jitter >= 0.0 && s.jitter < kMaxJitter,
+          "jitter must lie in [0, " + numberText(kMaxJitter) + ") grid spacings (got " + numberText(s.jitter) + ")");
   const double points = static_cast<double>(s.nx) * static_cast<double>(s.ny);
   require(points < 2e8, "grid too large: nx*ny = " + std::to_string(points));
 }

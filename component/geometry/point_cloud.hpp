@@ -26,10 +26,21 @@ struct GridSpec {
   }
 };
 
-// Throws InvalidInput with a precise message when the spec cannot describe a valid cloud.
-void validate(const GridSpec& spec);
-// The range of deltaOverH, for every grid: 1 <= delta/h <= 20 (the collar is 2 delta wide: an unbounded
-// horizon would overflow the point count). Throws InvalidInput.
+// The ranges of deltaOverH and jitter, for every grid, and the only definition of them (the FMI variables
+// take their min and max from here): 1 <= delta/h <= 20 (the collar is 2 delta wide: an unbounded horizon
+// would overflow the point count); 0 <= jitter < 0.5 (points stay in their own cells).
+inline constexpr double kMinDeltaOverH = 1.0, kMaxDeltaOverH = 20.0;
+inline constexpr double kMaxJitter = 0.5;
+inline constexpr std::size_t kMinPointsPerSide = 2;  // nx and ny
+
+// How nx points span Lx: on the vertices, h = Lx/(nx-1) (the quasi-static scenes and the specimen), or at
+// the centres of nx cells, h = Lx/nx (the dynamic scenes' lattices).
+enum class GridLayout { Vertex, CellCentred };
+
+// Throws InvalidInput with a precise message when the spec cannot describe a valid cloud: the one check of
+// the grid's sizes, spacing, horizon and jitter for every scene.
+void validate(const GridSpec& spec, GridLayout layout = GridLayout::Vertex);
+// The one check of the horizon's range: throws InvalidInput outside [kMinDeltaOverH, kMaxDeltaOverH].
 void validateHorizon(double deltaOverH);
 
 // Where a point sits: in the domain (unknown u), in the Dirichlet collar (prescribed u), or in the

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "models/poisson_ratio.hpp"
 
 namespace peristep {
 
@@ -14,8 +15,7 @@ struct Lame {
 // Rejects non-physical constants: E must be positive and finite, -1 < nu < 1/2.
 inline void validateElastic(double E, double nu) {
   require(std::isfinite(E) && E > 0.0, "Young's modulus must be positive and finite (got E = " + std::to_string(E) + ")");
-  require(std::isfinite(nu) && nu > -1.0 && nu < 0.5,
-          "Poisson ratio must lie in (-1, 0.5) (got nu = " + std::to_string(nu) + ")");
+  require(admissiblePoissonRatio(nu), "Poisson ratio must lie in (-1, 0.5) (got nu = " + std::to_string(nu) + ")");
 }
 
 // Plane strain, 000 Sec. 4: lambda = E nu/((1+nu)(1-2nu)), mu = E/(2(1+nu)).

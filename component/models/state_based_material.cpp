@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "models/poisson_ratio.hpp"
 
 namespace peristep {
 
@@ -14,7 +15,7 @@ StateBasedMaterial makeStateBasedMaterial(const StateBasedInput& in, double hori
   using std::to_string;
   const double K = in.bulkModulus, nu = in.poissonRatio, Gc = in.fractureEnergy;
   require(std::isfinite(K) && K > 0, "state-based material: bulk modulus must be positive (got " + to_string(K) + ")");
-  require(std::isfinite(nu) && nu > -1.0 && nu < 0.5,
+  require(admissiblePoissonRatio(nu),
           "state-based material: Poisson ratio must lie in (-1, 0.5) (got " + to_string(nu) + ")");
   require(std::isfinite(Gc) && Gc > 0, "state-based material: G_c must be positive (got " + to_string(Gc) + ")");
   require(std::isfinite(in.density) && in.density > 0,

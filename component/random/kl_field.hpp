@@ -16,12 +16,9 @@
 
 #include <Eigen/Dense>
 
-namespace peristep {
+#include "random/kl_options.hpp"
 
-enum class CovarianceKind {
-  Exponential,  // s^2 exp(-r / l)
-  Gaussian,     // s^2 exp(-r^2 / l^2)
-};
+namespace peristep {
 
 enum class KlSolver {
   Automatic,   // dense up to denseLimit points, randomized above
@@ -41,12 +38,6 @@ struct KlSpec {
   std::size_t oversampling = 20;    // randomized path only
   std::size_t powerIterations = 4;  // randomized path only
   std::uint64_t seed = 1;           // of the randomized path's test matrix
-};
-
-// How a zero-mean field g becomes a material parameter with mean value E0.
-enum class MaterialTransform {
-  Affine,    // E = E0 (1 + g): linear in xi, but not positive for large |xi| (rejected with a message)
-  Positive,  // E = E0 exp(g - v(x)/2): lognormal, positive for every xi, mean E0 (see materialField)
 };
 
 class KlField {

@@ -5,14 +5,15 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "geometry/point_cloud.hpp"
 
 namespace peristep {
 
 DynamicScene makeBendingTest(const BendingSpec& s) {
   require(s.cracks == 1 || s.cracks == 2, "bending test: 1 or 2 pre-cracks (got " + std::to_string(s.cracks) + ")");
-  require(s.horizon > 0 && s.meshRatio >= 1 && s.length > 0 && s.depth > 0 && s.crackLength > 0 &&
-              s.crackLength < s.depth,
-          "bending test: positive sizes, eps/h >= 1 and a pre-crack shorter than the depth are required");
+  validateHorizon(s.meshRatio);
+  require(s.horizon > 0 && s.length > 0 && s.depth > 0 && s.crackLength > 0 && s.crackLength < s.depth,
+          "bending test: positive sizes and a pre-crack shorter than the depth are required");
   const double eps = s.horizon, h = eps / s.meshRatio;
   const double cx = s.length / h, cy = s.depth / h;
   require(std::abs(cx - std::round(cx)) < 1e-6 && std::abs(cy - std::round(cy)) < 1e-6,

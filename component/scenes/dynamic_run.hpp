@@ -5,11 +5,12 @@
 #include <vector>
 
 #include "scenes/fracture_diagnostics.hpp"
+#include "solvers/time_integrator_kind.hpp"
 
 namespace peristep {
 
 struct DynamicRunOptions {
-  std::string integrator = "central_difference";
+  TimeIntegratorKind integrator = TimeIntegratorKind::CentralDifference;
   IntegratorOptions options;     // options.timeStep defaults to the scene's when left at 0
   double endTime = 0;            // 0: the scene's
   double reportInterval = 2e-6;  // [s]

@@ -17,11 +17,11 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
+#include "core/number_text.hpp"
 #include "models/state_based_material.hpp"
 #include "scenes/bending_test.hpp"
 #include "scenes/fracture_diagnostics.hpp"
@@ -32,13 +32,9 @@
 namespace peristep {
 namespace {
 
-constexpr double kBeamLength = 0.25, kBeamDepth = 0.05;  // the beam bending_test.hpp describes [m]
+std::string text(double x) { return numberText(x); }
 
-std::string text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
+constexpr double kBeamLength = 0.25, kBeamDepth = 0.05;  // the beam bending_test.hpp describes [m]
 
 double spacing(const SceneParameters& p) { return p.grid.Lx / static_cast<double>(p.grid.nx); }
 
@@ -235,15 +231,7 @@ class DynamicRunner final : public Runner {
 
 void validateDynamicScene(const SceneParameters& p) {
   const GridSpec& g = p.grid;
-  require(g.nx >= 2 && g.ny >= 2, "dynamic scenes need nx, ny >= 2 (got nx = " + std::to_string(g.nx) +
-                                      ", ny = " + std::to_string(g.ny) + ")");
-  require(std::isfinite(g.Lx) && std::isfinite(g.Ly) && g.Lx > 0 && g.Ly > 0, "Lx and Ly must be positive and finite");
-  const double hx = g.Lx / static_cast<double>(g.nx), hy = g.Ly / static_cast<double>(g.ny);
-  require(std::abs(hx - hy) <= 1e-9 * hx, "the dynamic scenes use cell-centred lattices with h = Lx/nx = Ly/ny, but "
-                                          "Lx/nx = " + std::to_string(hx) + " m and Ly/ny = " + std::to_string(hy) +
-                                          " m");
-  require(static_cast<double>(g.nx) * static_cast<double>(g.ny) < 2e8, "grid too large");
-  validateHorizon(g.deltaOverH);
+  validate(g, GridLayout::CellCentred);
   require(g.jitter == 0, "the dynamic scenes need a lattice: jitter must be 0 (got " + std::to_string(g.jitter) + ")");
   if (p.scene == SceneId::PlexiglassCrack) {
     require(g.nx == g.ny, "the Plexiglass crack is a square: nx must equal ny (got nx = " + std::to_string(g.nx) +

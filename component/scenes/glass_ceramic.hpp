@@ -17,7 +17,7 @@ struct GlassCeramicSpec {
   std::uint64_t seed = 1;
   double preCrackLength = 100e-6;
   PhaseConstants phases{80e9, 133e9, 6.59, 86.35, 0.25};  // 000 Table 1
-  std::string linearSolver = "umfpack";
+  LinearSolverKind linearSolver = LinearSolverKind::Umfpack;
   FactorizationReuse reuse = FactorizationReuse::StaleAsPreconditioner;
   // Crystal field R per point (collar included), e.g. the PCA expansion 000:(5.5); empty: the
   // microstructure generated from `seed`. E and G are affine in R; the crack shares count a point with

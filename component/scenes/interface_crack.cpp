@@ -9,7 +9,7 @@
 namespace peristep {
 
 InterfaceCrackScene::InterfaceCrackScene(const GridSpec& grid, double nu, double xi1, double xi2,
-                                         const std::string& solver)
+                                         LinearSolverKind solver)
     : field_(2.0 + std::sin(xi1), 2.0 + std::sin(xi2), nu) {
   require(std::isfinite(xi1) && std::isfinite(xi2), "random coordinates xi must be finite");
   require(xi2 >= -1.0 && xi2 <= 1.0, "Test 3: xi2 is uniform on [-1, 1] (got " + std::to_string(xi2) + ")");

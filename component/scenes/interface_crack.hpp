@@ -13,7 +13,8 @@ namespace peristep {
 
 class InterfaceCrackScene {
  public:
-  InterfaceCrackScene(const GridSpec& grid, double nu, double xi1, double xi2, const std::string& solver = "umfpack");
+  InterfaceCrackScene(const GridSpec& grid, double nu, double xi1, double xi2,
+                      LinearSolverKind solver = LinearSolverKind::Umfpack);
 
   // Solves with the collar at loadFactor times the exact field (the crack does not grow).
   void solve(double loadFactor = 1.0);

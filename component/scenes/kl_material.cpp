@@ -8,7 +8,7 @@ namespace {
 
 KlSpec klSpec(const SceneParameters& p) {
   KlSpec s;
-  s.kind = p.covariance == Covariance::Gaussian ? CovarianceKind::Gaussian : CovarianceKind::Exponential;
+  s.kind = p.covariance;
   s.correlationLength = p.correlationLength;
   s.standardDeviation = p.fieldStd;
   s.modes = p.xi.size();
@@ -37,8 +37,7 @@ std::shared_ptr<const KlField> sharedKlField(const PointCloud& c, const ScenePar
 }
 
 std::vector<double> klMaterial(const KlField& field, double E0, const SceneParameters& p) {
-  return field.materialField(
-      E0, p.xi, p.transform == FieldTransform::Exponential ? MaterialTransform::Positive : MaterialTransform::Affine);
+  return field.materialField(E0, p.xi, p.transform);
 }
 
 }  // namespace peristep

@@ -4,12 +4,14 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "geometry/point_cloud.hpp"
 
 namespace peristep {
 
 DynamicScene makePlexiglassCrack(const PlexiglassCrackSpec& s) {
-  require(s.horizon > 0 && s.meshRatio >= 1 && s.side > 0 && s.crackLength > 0 && s.crackLength < s.side,
-          "Plexiglass crack: horizon, eps/h >= 1, side and 0 < crack length < side are required");
+  validateHorizon(s.meshRatio);
+  require(s.horizon > 0 && s.side > 0 && s.crackLength > 0 && s.crackLength < s.side,
+          "Plexiglass crack: a positive horizon and side and 0 < crack length < side are required");
   const double eps = s.horizon, L = s.side;
   const double h = eps / s.meshRatio;
   const double cellsAcross = L / h, collarCells = eps / h;

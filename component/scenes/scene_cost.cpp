@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 #include "core/errors.hpp"
+#include "core/number_text.hpp"
 #include "geometry/point_cloud.hpp"
 #include "scenes/microstructure.hpp"
 
@@ -19,12 +19,6 @@ constexpr double kBytesPerBond = 40;          // neighbour index, weight, bond s
 constexpr double kBytesPerMatrixEntry = 48;   // assembly pieces and the CSR copies of A and B
 constexpr double kFlopsPerBond = 200;         // neighbour search, weights, assembly per bond
 constexpr double kFlopsPerCrystalCheck = 25;  // one grid point tested against one ellipse
-
-std::string text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2g", x);
-  return buf;
-}
 
 // Points of the grid with its collar (geometry/point_cloud.hpp).
 double collaredPoints(const GridSpec& g) {
@@ -58,8 +52,8 @@ Part lpsSetUp(const GridSpec& g) {
   Part p;
   p.bytes = kBytesPerBond * points * neighbours + kBytesPerMatrixEntry * entries + kBytesPerFactorEntry * factorEntries;
   p.flops = kFlopsPerBond * points * neighbours + factorFlops;
-  p.what = "the factorization of about " + text(unknowns) + " unknowns (" + text(factorFlops) + " flop, " +
-           text(kBytesPerFactorEntry * factorEntries) + " bytes)";
+  p.what = "the factorization of about " + numberText(unknowns, 2) + " unknowns (" + numberText(factorFlops, 2) +
+           " flop, " + numberText(kBytesPerFactorEntry * factorEntries, 2) + " bytes)";
   return p;
 }
 
@@ -73,8 +67,9 @@ Part microstructure(const SceneParameters& p, double realizations) {
   const double crystals = -std::log1p(-f) * p.grid.Lx * p.grid.Ly / (std::numbers::pi * e.semiMajor * e.semiMinor);
   Part m;
   m.flops = realizations * crystals * (2 * reach + 1) * (2 * reach + 1) * kFlopsPerCrystalCheck;
-  m.what = "placing about " + text(crystals) + " crystals of 12 x 7.5 um on the " + text(p.grid.Lx) + " x " +
-           text(p.grid.Ly) + " m plate" + (realizations > 1 ? " in each of " + text(realizations) + " realizations" : "");
+  m.what = "placing about " + numberText(crystals, 2) + " crystals of 12 x 7.5 um on the " + numberText(p.grid.Lx, 2) +
+           " x " + numberText(p.grid.Ly, 2) + " m plate" +
+           (realizations > 1 ? " in each of " + numberText(realizations, 2) + " realizations" : "");
   return m;
 }
 
@@ -86,7 +81,7 @@ Part pca(const SceneParameters& p) {
   Part m = microstructure(p, n * passes);
   m.flops += 3 * passes * n * 2 * M * l;
   m.bytes = 8 * M * (4 * l + 64);
-  m.what = "the PCA of " + text(n) + " realizations (" + m.what + ")";
+  m.what = "the PCA of " + numberText(n, 2) + " realizations (" + m.what + ")";
   return m;
 }
 
@@ -98,7 +93,7 @@ Part klField(const SceneParameters& p) {
   Part m;
   m.flops = N <= 1200 ? 9 * N * N * N : 6 * N * N * (20 + 2 * l);
   m.bytes = N <= 1200 ? 24 * N * N : 8 * N * (4 * l + 128);
-  m.what = "the KL modes on " + text(N) + " points";
+  m.what = "the KL modes on " + numberText(N, 2) + " points";
   return m;
 }
 
@@ -111,7 +106,7 @@ Part dynamicSetUp(const GridSpec& g) {
   Part m;
   m.bytes = 48 * bonds;
   m.flops = 100 * bonds;
-  m.what = "the " + text(bonds) + " bonds of the lattice";
+  m.what = "the " + numberText(bonds, 2) + " bonds of the lattice";
   return m;
 }
 
@@ -148,12 +143,12 @@ void checkSetUpLimits(const SceneParameters& p) {
                              std::string(p.scene == SceneId::GlassCeramic ? ", a smaller plate or fewer pcaRealizations"
                                                                           : "");
   if (l.memoryBytes > 0 && e.bytes > l.memoryBytes)
-    throw InvalidInput("the scene set-up would need about " + text(e.bytes) + " bytes of memory (mostly " +
-                       e.mostMemory + ") but memoryBudget = " + text(l.memoryBytes) + " bytes; " + change +
+    throw InvalidInput("the scene set-up would need about " + numberText(e.bytes, 2) + " bytes of memory (mostly " +
+                       e.mostMemory + ") but memoryBudget = " + numberText(l.memoryBytes, 2) + " bytes; " + change +
                        ", or raise memoryBudget");
   if (l.setUpSeconds > 0 && e.seconds > l.setUpSeconds)
-    throw InvalidInput("the scene set-up would take about " + text(e.seconds) + " s (mostly " + e.mostTime +
-                       ") but setUpTimeLimit = " + text(l.setUpSeconds) + " s; " + change +
+    throw InvalidInput("the scene set-up would take about " + numberText(e.seconds, 2) + " s (mostly " + e.mostTime +
+                       ") but setUpTimeLimit = " + numberText(l.setUpSeconds, 2) + " s; " + change +
                        ", or raise setUpTimeLimit");
 }
 

@@ -9,7 +9,6 @@
 #include "scenes/exact_moments.hpp"
 #include "scenes/scene_cost.hpp"
 #include "scenes/scene_runner.hpp"
-#include "solvers/linear_solver.hpp"
 
 namespace peristep {
 
@@ -77,7 +76,6 @@ void validate(const SceneParameters& p) {
     require(std::isfinite(p.xi[k]), "xi[" + std::to_string(k) + "] is not finite");
   if (p.scene == SceneId::InterfaceCrack)
     require(std::abs(p.xi[1]) <= 1.0, "xi[1] of Test 3 is uniform on [-1, 1] (got " + std::to_string(p.xi[1]) + ")");
-  makeLinearSolver(p.linearSolver);  // throws on an unknown name
 }
 
 struct SceneModel::Impl {

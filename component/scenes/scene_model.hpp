@@ -11,7 +11,9 @@
 
 #include "core/progress.hpp"
 #include "geometry/point_cloud.hpp"
+#include "random/kl_options.hpp"
 #include "scenes/specimen.hpp"
+#include "solvers/linear_solver_kind.hpp"
 #include "solvers/time_integrator_kind.hpp"
 
 namespace peristep {
@@ -31,15 +33,12 @@ enum class SceneId : std::int64_t {
 // Law of a standardized coordinate; Unused: the scene ignores that entry of xi.
 enum class XiDistribution : std::int32_t { Normal = 0, Uniform = 1, Unused = 2 };
 
-enum class Covariance { Exponential, Gaussian };
-
 // Bounds on the work an instance may start, checked against estimates before the work begins; 0: none.
 struct WorkLimits {
   double memoryBytes = 0;           // estimated peak memory of the set-up (scenes/scene_cost.hpp)
   double setUpSeconds = 0;          // estimated run time of the set-up
   std::uint64_t internalSteps = 0;  // dynamic scenes: internal time steps of one advance
 };
-enum class FieldTransform { Affine, Exponential };
 
 struct SceneParameters {
   SceneId scene = SceneId::Smooth;
@@ -47,17 +46,17 @@ struct SceneParameters {
   double poissonRatio = 0.3;
   double modulusContrast = 2.0;     // Composite: E(right)/E(left)
   std::vector<double> xi;           // standardized random coordinates (physical = xiScale * xi)
-  std::string linearSolver = "umfpack";
+  LinearSolverKind linearSolver = LinearSolverKind::Umfpack;
   double crystalFraction = 0.2;     // GlassCeramic: target crystal area fraction f
   // GlassCeramic: 0 = the microstructure realization of `seed`; n > 0 = the PCA field 000:(5.5) of n
   // realizations with xi.size() modes.
   std::size_t pcaRealizations = 0;
   // KlPlate: E = E0 (1 + g) or E0 exp(g - s^2/2), g the KL expansion of a field with covariance
   // s^2 k(r / l) (000 Sec. 2.2).
-  Covariance covariance = Covariance::Exponential;
+  CovarianceKind covariance = CovarianceKind::Exponential;
   double correlationLength = 0.5;   // l [m]
   double fieldStd = 0.3;            // s
-  FieldTransform transform = FieldTransform::Affine;
+  MaterialTransform transform = MaterialTransform::Affine;
   // Dynamic scenes (5-7): the time integrator (solvers/time_integrator.hpp), the central difference step
   // (0: the scene's step from 001) and the SUNDIALS relative tolerance.
   TimeIntegratorKind timeIntegrator = TimeIntegratorKind::CentralDifference;

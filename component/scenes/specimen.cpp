@@ -2,19 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "core/errors.hpp"
+#include "core/number_text.hpp"
+#include "models/poisson_ratio.hpp"
 
 namespace peristep {
 
 namespace {
 
-std::string text(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
+std::string text(double x) { return numberText(x); }
 
 // Whether the map has material somewhere along a side's edge row or column.
 bool materialAlong(const std::vector<double>& E, const GridSpec& g, Side side) {
@@ -47,7 +44,7 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
             "materialYoungsModulus" + at + " must be >= 0 (0: Void), got " + text(s.youngsModulus[i]));
     require(std::isfinite(s.fractureEnergy[i]) && s.fractureEnergy[i] > 0,
             "materialFractureEnergy" + at + " must be positive, got " + text(s.fractureEnergy[i]));
-    require(std::isfinite(s.poissonRatio[i]) && s.poissonRatio[i] > -1 && s.poissonRatio[i] < 0.5,
+    require(admissiblePoissonRatio(s.poissonRatio[i]),
             "materialPoissonRatio" + at + " must lie in (-1, 0.5), got " + text(s.poissonRatio[i]));
     anyMaterial = anyMaterial || s.youngsModulus[i] > 0;
   }

@@ -8,6 +8,7 @@
 namespace peristep {
 
 DynamicScene makeStiffInclusions(const StiffInclusionsSpec& s) {
+  validateHorizon(s.meshRatio);
   require(s.contrast >= 1 && std::isfinite(s.contrast), "stiff inclusions: contrast must be >= 1");
   require(s.rampTime > 0 && s.endTime > 0, "stiff inclusions: ramp and end times must be positive");
   DynamicScene scene;

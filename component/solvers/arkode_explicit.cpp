@@ -21,32 +21,32 @@ class ArkodeExplicit final : public TimeIntegrator {
         atol_(static_cast<sunindextype>(2 * n_ + 1), ctx_),
         f_(n_) {
     require(o.relativeTolerance > 0 && o.absoluteTolerance > 0 && o.velocityTolerance > 0,
-            "arkode_erk: tolerances must be positive");
+            "arkodeErk: tolerances must be positive");
     sundials::initialState(problem_, y_.data());
     sundials::absoluteTolerances(n_, o.absoluteTolerance, o.velocityTolerance, atol_.data());
     mem_.reset(ERKStepCreate(&ArkodeExplicit::rhs, 0.0, y_, ctx_));
-    if (!mem_) throw SolverFailure("arkode_erk: ERKStepCreate failed");
+    if (!mem_) throw SolverFailure("arkodeErk: ERKStepCreate failed");
     check(ERKStepSetUserData(mem_.get(), this), "ERKStepSetUserData");
     check(ERKStepSetErrHandlerFn(mem_.get(), &sundials::keepMessage, &message_), "ERKStepSetErrHandlerFn");
     check(ERKStepSVtolerances(mem_.get(), o.relativeTolerance, atol_), "ERKStepSVtolerances");
     check(ERKStepSetMaxNumSteps(mem_.get(), o.maxSteps), "ERKStepSetMaxNumSteps");
   }
-  std::string_view name() const override { return "arkode_erk"; }
+  std::string_view name() const override { return "arkodeErk"; }
   double time() const override { return t_; }
   const double* displacement() const override { return y_.data(); }
   const double* velocity() const override { return y_.data() + n_; }
   double externalWork() const override { return y_.data()[2 * n_]; }
 
   void advanceTo(double t) override {
-    require(std::isfinite(t) && t >= t_, "arkode_erk: cannot integrate backwards");
+    require(std::isfinite(t) && t >= t_, "arkodeErk: cannot integrate backwards");
     if (t == t_) return;
     const Stopwatch clock;
     check(ERKStepSetStopTime(mem_.get(), t), "ERKStepSetStopTime");
     double reached = t_;
     const int flag = ERKStepEvolve(mem_.get(), t, y_, &reached, ARK_NORMAL);
     seconds_ += clock.seconds();
-    if (!callbackError_.empty()) throw SolverFailure("arkode_erk: " + callbackError_);
-    if (flag < 0) throw SolverFailure("arkode_erk: step failed at t = " + std::to_string(reached) + " s: " + message_);
+    if (!callbackError_.empty()) throw SolverFailure("arkodeErk: " + callbackError_);
+    if (flag < 0) throw SolverFailure("arkodeErk: step failed at t = " + std::to_string(reached) + " s: " + message_);
     t_ = reached;
   }
 
@@ -83,7 +83,7 @@ class ArkodeExplicit final : public TimeIntegrator {
     return s;
   }
   void check(int flag, const char* what) const {
-    if (flag < 0) throw SolverFailure(std::string("arkode_erk: ") + what + " failed: " + message_);
+    if (flag < 0) throw SolverFailure(std::string("arkodeErk: ") + what + " failed: " + message_);
   }
 
   DynamicProblem& problem_;

@@ -13,13 +13,13 @@ namespace peristep {
 CentralDifference::CentralDifference(DynamicProblem& problem, const IntegratorOptions& options)
     : problem_(problem) {
   require(std::isfinite(options.timeStep) && options.timeStep > 0,
-          "central_difference: the time step must be positive");
+          "centralDifference: the time step must be positive");
   stability_ = estimateStabilityLimit(problem_);
   dt_ = options.timeStep;
   if (dt_ > stability_.criticalStep) {
     if (!options.allowSubsteps) {
       std::ostringstream msg;
-      msg << "central_difference: time step " << dt_ << " s exceeds the stability limit "
+      msg << "centralDifference: time step " << dt_ << " s exceeds the stability limit "
           << stability_.criticalStep << " s (2/omega_max, omega_max = " << stability_.omegaMax
           << " rad/s); use a step below the limit or allow substeps";
       throw InvalidInput(msg.str());
@@ -80,7 +80,7 @@ void CentralDifference::step(double dt) {
 }
 
 void CentralDifference::setState(double t, const double* u, const double* v, double work) {
-  require(std::isfinite(t) && std::isfinite(work), "central_difference: the state's time and work must be finite");
+  require(std::isfinite(t) && std::isfinite(work), "centralDifference: the state's time and work must be finite");
   std::copy(u, u + u_.size(), u_.begin());
   std::copy(v, v + v_.size(), v_.begin());
   t_ = t;
@@ -92,7 +92,7 @@ void CentralDifference::setState(double t, const double* u, const double* v, dou
 }
 
 void CentralDifference::advanceTo(double t) {
-  require(std::isfinite(t) && t >= t_ - 1e-12 * std::abs(t_), "central_difference: cannot integrate backwards");
+  require(std::isfinite(t) && t >= t_ - 1e-12 * std::abs(t_), "centralDifference: cannot integrate backwards");
   const FlushDenormals flush;  // this thread; the threads of the force loop take their own
   const Stopwatch clock;
   // Whole steps, the last one landing exactly on t (shortened when t is not a multiple of the step:
@@ -102,7 +102,7 @@ void CentralDifference::advanceTo(double t) {
   if (steps >= 1) step(t - t_);
   for (std::size_t d = 0; d < u_.size(); ++d)
     if (!std::isfinite(u_[d]) || !std::isfinite(v_[d]))
-      throw SolverFailure("central_difference: the solution is no longer finite at t = " + std::to_string(t_) + " s");
+      throw SolverFailure("centralDifference: the solution is no longer finite at t = " + std::to_string(t_) + " s");
   stats_.seconds += clock.seconds();
 }
 

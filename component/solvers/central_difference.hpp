@@ -16,7 +16,7 @@ class CentralDifference final : public TimeIntegrator {
   // options.allowSubsteps: then every step is split into equal substeps below 0.95 of the limit.
   CentralDifference(DynamicProblem& problem, const IntegratorOptions& options);
 
-  std::string_view name() const override { return "central_difference"; }
+  std::string_view name() const override { return "centralDifference"; }
   void advanceTo(double t) override;
   double time() const override { return t_; }
   const double* displacement() const override { return u_.data(); }

@@ -25,13 +25,13 @@ class CvodeImplicit final : public TimeIntegrator {
         f_(n_),
         precond_(problem) {
     require(o.relativeTolerance > 0 && o.absoluteTolerance > 0 && o.velocityTolerance > 0,
-            "cvode_bdf: tolerances must be positive");
-    require(o.maxOrder >= 1 && o.maxOrder <= 5, "cvode_bdf: maxOrder must lie in 1..5");
-    require(o.krylovDimension >= 1, "cvode_bdf: krylovDimension must be positive");
+            "cvodeBdf: tolerances must be positive");
+    require(o.maxOrder >= 1 && o.maxOrder <= 5, "cvodeBdf: maxOrder must lie in 1..5");
+    require(o.krylovDimension >= 1, "cvodeBdf: krylovDimension must be positive");
     sundials::initialState(problem_, y_.data());
     sundials::absoluteTolerances(n_, o.absoluteTolerance, o.velocityTolerance, atol_.data());
     mem_.reset(CVodeCreate(CV_BDF, ctx_));
-    if (!mem_) throw SolverFailure("cvode_bdf: CVodeCreate failed");
+    if (!mem_) throw SolverFailure("cvodeBdf: CVodeCreate failed");
     void* m = mem_.get();
     check(CVodeSetErrHandlerFn(m, &sundials::keepMessage, &message_), "CVodeSetErrHandlerFn");
     check(CVodeInit(m, &CvodeImplicit::rhs, 0.0, y_), "CVodeInit");
@@ -40,28 +40,28 @@ class CvodeImplicit final : public TimeIntegrator {
     check(CVodeSetMaxOrd(m, o.maxOrder), "CVodeSetMaxOrd");
     check(CVodeSetMaxNumSteps(m, o.maxSteps), "CVodeSetMaxNumSteps");
     ls_.reset(SUNLinSol_SPGMR(y_, SUN_PREC_LEFT, o.krylovDimension, ctx_));
-    if (!ls_) throw SolverFailure("cvode_bdf: SUNLinSol_SPGMR failed");
+    if (!ls_) throw SolverFailure("cvodeBdf: SUNLinSol_SPGMR failed");
     check(CVodeSetLinearSolver(m, ls_.get(), nullptr), "CVodeSetLinearSolver");
     check(CVodeSetJacTimes(m, nullptr, &CvodeImplicit::jtimes), "CVodeSetJacTimes");
     check(CVodeSetPreconditioner(m, &CvodeImplicit::psetup, &CvodeImplicit::psolve), "CVodeSetPreconditioner");
   }
 
-  std::string_view name() const override { return "cvode_bdf"; }
+  std::string_view name() const override { return "cvodeBdf"; }
   double time() const override { return t_; }
   const double* displacement() const override { return y_.data(); }
   const double* velocity() const override { return y_.data() + n_; }
   double externalWork() const override { return y_.data()[2 * n_]; }
 
   void advanceTo(double t) override {
-    require(std::isfinite(t) && t >= t_, "cvode_bdf: cannot integrate backwards");
+    require(std::isfinite(t) && t >= t_, "cvodeBdf: cannot integrate backwards");
     if (t == t_) return;
     const Stopwatch clock;
     check(CVodeSetStopTime(mem_.get(), t), "CVodeSetStopTime");
     double reached = t_;
     const int flag = CVode(mem_.get(), t, y_, &reached, CV_NORMAL);
     seconds_ += clock.seconds();
-    if (!callbackError_.empty()) throw SolverFailure("cvode_bdf: " + callbackError_);
-    if (flag < 0) throw SolverFailure("cvode_bdf: step failed at t = " + std::to_string(reached) + " s: " + message_);
+    if (!callbackError_.empty()) throw SolverFailure("cvodeBdf: " + callbackError_);
+    if (flag < 0) throw SolverFailure("cvodeBdf: step failed at t = " + std::to_string(reached) + " s: " + message_);
     t_ = reached;
   }
 
@@ -134,7 +134,7 @@ class CvodeImplicit final : public TimeIntegrator {
     });
   }
   void check(int flag, const char* what) const {
-    if (flag < 0) throw SolverFailure(std::string("cvode_bdf: ") + what + " failed: " + message_);
+    if (flag < 0) throw SolverFailure(std::string("cvodeBdf: ") + what + " failed: " + message_);
   }
 
   DynamicProblem& problem_;

@@ -23,16 +23,15 @@ void checkFinite(std::span<const double> x, const char* who) {
 
 class SparseLuSolver final : public LinearSolver {
  public:
-  std::string name() const override { return "sparselu"; }
   void analyze(const CsrMatrix& A) override { lu_.analyzePattern(Eigen::SparseMatrix<double>(toEigen(A))); }
   void factorize(const CsrMatrix& A) override {
     lu_.factorize(Eigen::SparseMatrix<double>(toEigen(A)));
-    if (lu_.info() != Eigen::Success) throw SolverFailure("sparselu: factorization failed: " + lu_.lastErrorMessage());
+    if (lu_.info() != Eigen::Success) throw SolverFailure("sparseLU: factorization failed: " + lu_.lastErrorMessage());
   }
   void solve(std::span<const double> b, std::span<double> x) override {
     Eigen::Map<const Eigen::VectorXd> bv(b.data(), static_cast<Eigen::Index>(b.size()));
     Eigen::Map<Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size())) = lu_.solve(bv);
-    checkFinite(x, "sparselu");
+    checkFinite(x, "sparseLU");
   }
 
  private:
@@ -41,7 +40,6 @@ class SparseLuSolver final : public LinearSolver {
 
 class BicgstabIlutSolver final : public LinearSolver {
  public:
-  std::string name() const override { return "bicgstab-ilut"; }
   void analyze(const CsrMatrix&) override {}
   void factorize(const CsrMatrix& A) override {
     A_ = toEigen(A);
@@ -50,15 +48,15 @@ class BicgstabIlutSolver final : public LinearSolver {
     solver_.preconditioner().setDroptol(1e-4);
     solver_.preconditioner().setFillfactor(10);
     solver_.compute(A_);
-    if (solver_.info() != Eigen::Success) throw SolverFailure("bicgstab-ilut: preconditioner failed");
+    if (solver_.info() != Eigen::Success) throw SolverFailure("bicgstabIlut: preconditioner failed");
   }
   void solve(std::span<const double> b, std::span<double> x) override {
     Eigen::Map<const Eigen::VectorXd> bv(b.data(), static_cast<Eigen::Index>(b.size()));
     Eigen::Map<Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size())) = solver_.solve(bv);
     if (solver_.info() != Eigen::Success)
-      throw SolverFailure("bicgstab-ilut: no convergence after " + std::to_string(solver_.iterations()) +
+      throw SolverFailure("bicgstabIlut: no convergence after " + std::to_string(solver_.iterations()) +
                           " iterations (residual " + std::to_string(solver_.error()) + ")");
-    checkFinite(x, "bicgstab-ilut");
+    checkFinite(x, "bicgstabIlut");
   }
 
  private:

@@ -4,19 +4,14 @@
 
 namespace peristep {
 
-const std::vector<std::string>& linearSolverNames() {
-  static const std::vector<std::string> names{"umfpack", "umfpack-amd", "sparselu", "bicgstab-ilut"};
-  return names;
-}
-
-std::unique_ptr<LinearSolver> makeLinearSolver(const std::string& name) {
-  if (name == "umfpack") return makeUmfpackSolver(true);
-  if (name == "umfpack-amd") return makeUmfpackSolver(false);
-  if (name == "sparselu") return makeSparseLuSolver();
-  if (name == "bicgstab-ilut") return makeBicgstabIlutSolver();
-  std::string known;
-  for (const auto& n : linearSolverNames()) known += (known.empty() ? "" : ", ") + n;
-  throw InvalidInput("unknown linear solver '" + name + "' (known: " + known + ")");
+std::unique_ptr<LinearSolver> makeLinearSolver(LinearSolverKind kind) {
+  switch (kind) {
+    case LinearSolverKind::Umfpack: return makeUmfpackSolver(true);
+    case LinearSolverKind::UmfpackAmd: return makeUmfpackSolver(false);
+    case LinearSolverKind::SparseLu: return makeSparseLuSolver();
+    case LinearSolverKind::BicgstabIlut: return makeBicgstabIlutSolver();
+  }
+  throw InvalidInput("unknown linear solver " + std::to_string(static_cast<int>(kind)));
 }
 
 }  // namespace peristep

@@ -2,17 +2,15 @@
 // One small interface for the sparse solvers, so that drivers can swap them and reuse factorizations.
 #include <memory>
 #include <span>
-#include <string>
-#include <vector>
 
 #include "core/csr_matrix.hpp"
+#include "solvers/linear_solver_kind.hpp"
 
 namespace peristep {
 
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  virtual std::string name() const = 0;
   // Symbolic analysis (ordering, pattern). Call again only when the sparsity pattern changes.
   virtual void analyze(const CsrMatrix& A) = 0;
   // Numeric factorization or preconditioner of A, which has the analyzed pattern. A must stay
@@ -25,11 +23,7 @@ class LinearSolver {
   virtual void precondition(std::span<const double> b, std::span<double> x) { solve(b, x); }
 };
 
-// "umfpack" (UMFPACK, 64-bit indices, METIS nested-dissection ordering: the fastest here, see
-// bench/README.md), "umfpack-amd" (UMFPACK with its default AMD/COLAMD ordering),
-// "sparselu" (Eigen SparseLU, COLAMD), "bicgstab-ilut" (Eigen BiCGSTAB with an ILUT preconditioner).
-std::unique_ptr<LinearSolver> makeLinearSolver(const std::string& name);
-const std::vector<std::string>& linearSolverNames();
+std::unique_ptr<LinearSolver> makeLinearSolver(LinearSolverKind kind);
 
 std::unique_ptr<LinearSolver> makeUmfpackSolver(bool metisOrdering);
 std::unique_ptr<LinearSolver> makeSparseLuSolver();

@@ -43,7 +43,7 @@ double springStiffness(double mu, double delta) { return kSpringRatio * 24.0 * m
 
 QuasiStaticFracture::QuasiStaticFracture(std::shared_ptr<const LpsDiscretization> disc, FractureMaterial material,
                                          BondState bonds, std::vector<double> unitCollarDisplacement,
-                                         const std::string& solverName, FactorizationReuse reuse)
+                                         LinearSolverKind solver, FactorizationReuse reuse)
     : disc_(std::move(disc)),
       material_(std::move(material)),
       bonds_(std::move(bonds)),
@@ -62,7 +62,7 @@ QuasiStaticFracture::QuasiStaticFracture(std::shared_ptr<const LpsDiscretization
     zone_ = std::make_unique<CrackZoneSolver>(disc_->neighbours, disc_->dofs);
     return;
   }
-  solver_ = makeLinearSolver(solverName);
+  solver_ = makeLinearSolver(solver);
   // The symbolic analysis belongs to the matrix of the construction state in every instance (UMFPACK's
   // strategy looks at the values), so that a state restored into another instance factors identically.
   solver_->analyze(system_.A);

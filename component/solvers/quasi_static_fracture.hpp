@@ -61,7 +61,7 @@ class QuasiStaticFracture {
   // unitCollarDisplacement: (u_x, u_y) of every point for load 1; the collar follows load * it
   // (the problem has no body force).
   QuasiStaticFracture(std::shared_ptr<const LpsDiscretization> disc, FractureMaterial material, BondState bonds,
-                      std::vector<double> unitCollarDisplacement, const std::string& solverName = "umfpack",
+                      std::vector<double> unitCollarDisplacement, LinearSolverKind solver = LinearSolverKind::Umfpack,
                       FactorizationReuse reuse = FactorizationReuse::CrackZone);
 
   LoadStepReport advance(double load);

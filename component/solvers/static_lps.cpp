@@ -10,8 +10,8 @@
 namespace peristep {
 
 StaticLps::StaticLps(std::shared_ptr<const LpsDiscretization> disc, const ElasticScene& scene,
-                     const std::string& solverName)
-    : disc_(std::move(disc)), scene_(scene), solver_(makeLinearSolver(solverName)) {
+                     LinearSolverKind solver)
+    : disc_(std::move(disc)), scene_(scene), solver_(makeLinearSolver(solver)) {
   const PointCloud& c = disc_->cloud;
   const DofMap& d = disc_->dofs;
   const double nu = scene.poissonRatio();

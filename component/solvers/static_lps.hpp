@@ -19,7 +19,7 @@ class StaticLps {
   // Evaluates the material on every point (rejecting E <= 0 with the offending location), assembles
   // the (u, theta) system and factorizes it.
   StaticLps(std::shared_ptr<const LpsDiscretization> disc, const ElasticScene& scene,
-            const std::string& solverName = "umfpack");
+            LinearSolverKind solver = LinearSolverKind::Umfpack);
 
   // Displacement for body force and collar data scaled by loadFactor (the problem is linear).
   void solve(double loadFactor = 1.0);

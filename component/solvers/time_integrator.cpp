@@ -7,17 +7,6 @@
 
 namespace peristep {
 
-std::vector<std::string> timeIntegratorNames() { return {"central_difference", "arkode_erk", "cvode_bdf"}; }
-
-TimeIntegratorKind timeIntegratorKind(std::string_view name) {
-  if (name == "central_difference") return TimeIntegratorKind::CentralDifference;
-  if (name == "arkode_erk") return TimeIntegratorKind::ArkodeErk;
-  if (name == "cvode_bdf") return TimeIntegratorKind::CvodeBdf;
-  std::string known;
-  for (const std::string& n : timeIntegratorNames()) known += (known.empty() ? "" : ", ") + n;
-  throw InvalidInput("unknown time integrator '" + std::string(name) + "' (known: " + known + ")");
-}
-
 std::unique_ptr<TimeIntegrator> makeTimeIntegrator(TimeIntegratorKind kind, DynamicProblem& problem,
                                                    const IntegratorOptions& options) {
   switch (kind) {

@@ -1,9 +1,10 @@
 #pragma once
-// One small interface over the time integrators of the semi-discrete system, chosen by name:
-//   "central_difference"  explicit central difference 001:(35)-(36), fixed step, stability-checked
-//   "arkode_erk"          SUNDIALS ARKODE ERKStep, explicit adaptive Runge-Kutta
-//   "cvode_bdf"           SUNDIALS CVODE BDF (order <= 2 by default), Newton + matrix-free SPGMR with a
-//                         preconditioner built from the rest-state tangent: for stiff problems
+// One small interface over the time integrators of the semi-discrete system, chosen by TimeIntegratorKind
+// (solvers/time_integrator_kind.hpp, with their names):
+//   centralDifference  explicit central difference 001:(35)-(36), fixed step, stability-checked
+//   arkodeErk          SUNDIALS ARKODE ERKStep, explicit adaptive Runge-Kutta
+//   cvodeBdf           SUNDIALS CVODE BDF (order <= 2 by default), Newton + matrix-free SPGMR with a
+//                      preconditioner built from the rest-state tangent: for stiff problems
 #include <memory>
 #include <string>
 #include <string_view>
@@ -21,9 +22,9 @@ struct IntegratorOptions {
   double absoluteTolerance = 1e-12;    // SUNDIALS: on displacements [m]
   double velocityTolerance = 1e-6;     // SUNDIALS: absolute tolerance on velocities [m/s]
   long maxSteps = 100000000;           // SUNDIALS: per advanceTo call
-  int maxOrder = 2;                    // cvode_bdf: BDF order cap (orders > 2 are not A-stable, and the
+  int maxOrder = 2;                    // cvodeBdf: BDF order cap (orders > 2 are not A-stable, and the
                                        // undamped modes of elastodynamics sit on the imaginary axis)
-  int krylovDimension = 20;            // cvode_bdf: SPGMR restart length
+  int krylovDimension = 20;            // cvodeBdf: SPGMR restart length
 };
 
 struct IntegratorStats {
@@ -68,10 +69,6 @@ class TimeIntegrator {
   virtual void setState(double t, const double* u, const double* v, double work) = 0;
 };
 
-std::vector<std::string> timeIntegratorNames();
-// The kind a name above stands for (command lines of the benches and tests); throws InvalidInput for an
-// unknown name, listing the known ones.
-TimeIntegratorKind timeIntegratorKind(std::string_view name);
 // Throws InvalidInput for invalid options (a step above the stability limit).
 std::unique_ptr<TimeIntegrator> makeTimeIntegrator(TimeIntegratorKind kind, DynamicProblem& problem,
                                                    const IntegratorOptions& options);

@@ -25,7 +25,6 @@ class UmfpackSolver final : public LinearSolver {
   UmfpackSolver(const UmfpackSolver&) = delete;
   UmfpackSolver& operator=(const UmfpackSolver&) = delete;
 
-  std::string name() const override { return metis_ ? "umfpack" : "umfpack-amd"; }
 
   void analyze(const CsrMatrix& A) override {
     release();
