@@ -41,7 +41,20 @@ class SchurFactorization {
 
  private:
   struct Mumps;
+  // Memory mapped once and kept: MUMPS's main work array across factorizations.
+  struct Workspace {
+    void* data = nullptr;
+    std::size_t bytes = 0;
+    Workspace() = default;
+    Workspace& operator=(Workspace&& o) noexcept {
+      std::swap(data, o.data);
+      std::swap(bytes, o.bytes);
+      return *this;
+    }
+    ~Workspace();
+  };
   void call(int job, const char* what);
+  void useWorkspace();
 
   std::unique_ptr<Mumps> mumps_;
   std::vector<int> rowIndex_, colIndex_;  // 1-based coordinates of A's entries
@@ -49,6 +62,8 @@ class SchurFactorization {
   std::vector<int> schurList_, position_;  // 1-based, for MUMPS
   std::vector<double> schur_, rhs_;
   bool analyzed_ = false;
+  std::int64_t workspaceEstimate_ = 0;  // MUMPS' estimate of S after the analysis, entries
+  Workspace workspace_;  // outlives the MUMPS instance: the destructor terminates MUMPS first
 };
 
 }  // namespace peristep
