@@ -103,9 +103,12 @@ Row run(double epsOverH, double nu, std::size_t side, int steps, int repeats) {
   r.seconds = median(wall);
   r.cpu = median(cpu);
   r.updatesPerSecond = static_cast<double>(r.bonds) * steps / r.seconds;
-  // Streamed per bond and evaluation: neighbour index (4 B), q (16 B), w (8 B). With the hydrostatic
-  // force a theta pass reads index, q and ws (28 B) and the force pass reads ws as well (36 B).
-  r.bytesPerBond = model.material().g.active() ? 28 + 36 : 28;
+  // Streamed per stored bond and evaluation: neighbour and direction indices (4 B each) and w (8 B); with
+  // the hydrostatic force a theta pass reads indices and ws (16 B) and the force pass ws as well (24 B).
+  // Per pair: times stored / pairs (each point's list is padded to a group of kBondLanes).
+  const StateBasedBonds& b = model.bonds();
+  const double stored = static_cast<double>(b.neighbour.size()) / static_cast<double>(b.bonds());
+  r.bytesPerBond = (model.material().g.active() ? 16 + 24 : 16) * stored;
   r.gbPerSecond = r.updatesPerSecond * r.bytesPerBond / 1e9;
   r.fractionOfBound = r.gbPerSecond / r.triadGbPerSecond;
   return r;
@@ -137,7 +140,7 @@ int main(int argc, char** argv) {
               repeats, "eps/h", "nu", "points", "bonds", "steps", "wall s", "cpu s", "bond-upd/s", "bytes/bond", "GB/s",
               "triad", "bound");
   for (const Row& r : rows)
-    std::printf("%6.0f %5.2f %7zu %9zu %5d %8.3f %8.3f %12.3e %10.0f %6.2f %8.2f %7.0f%%\n", r.epsOverH, r.nu, r.points,
+    std::printf("%6.0f %5.2f %7zu %9zu %5d %8.3f %8.3f %12.3e %10.1f %6.2f %8.2f %7.0f%%\n", r.epsOverH, r.nu, r.points,
                 r.bonds, r.steps, r.seconds, r.cpu, r.updatesPerSecond, r.bytesPerBond, r.gbPerSecond,
                 r.triadGbPerSecond, 100 * r.fractionOfBound);
   std::printf("(bond-upd/s = points x bonds/point x steps / wall seconds; cpu s above wall s x threads means\n"

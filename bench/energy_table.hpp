@@ -35,7 +35,7 @@ class EnergyTable {
                 e.maxDamageWithPreCrack);
     std::fflush(stdout);
     if (csv_)
-      std::fprintf(csv_, "%g,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.6f,%.9e,%.9e,%.6f\n", e.time * 1e6, e.kinetic, e.elastic,
+      std::fprintf(csv_, "%g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e.time * 1e6, e.kinetic, e.elastic,
                    e.externalWork, e.balance(first_), e.fractureEnergy, e.crackLength, ge, e.maxDamage,
                    e.fractureEnergyWithPreCrack, e.crackLengthWithPreCrack, e.maxDamageWithPreCrack);
   }

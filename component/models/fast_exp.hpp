@@ -6,19 +6,27 @@
 // (component/CMakeLists.txt sets it on models/state_based_kernels.cpp).
 #include <bit>
 #include <cstdint>
+#include <type_traits>
 
 namespace peristep {
 
-inline double expNonPositive(double y) {
-  y = y < -708.0 ? -708.0 : y;
+// T is double or a GCC vector of doubles (the bond kernels' groups of lanes, state_based_kernels.cpp):
+// the same operations lane by lane.
+template <class T>
+using ExpBits = std::conditional_t<std::is_floating_point_v<T>, std::int64_t, decltype(T{} < T{})>;
+
+template <class T>
+inline T expNonPositive(T y) {
+  const T zero{};
+  y = y < zero - 708.0 ? zero - 708.0 : y;
   constexpr double log2e = 1.4426950408889634;
   constexpr double ln2hi = 0.6931471805598903, ln2lo = 5.497923018708371e-14;  // ln 2 split in two
   constexpr double shift = 6755399441055744.0;  // 1.5 * 2^52: adding it rounds to an integer
   // y = n ln 2 + r with |r| <= ln2/2; exp(r) by its Taylor polynomial of degree 12 (error < 2e-16).
-  const double z = y * log2e + shift;
-  const double n = z - shift;
-  const double r = (y - n * ln2hi) - n * ln2lo;
-  double p = 1.0 / 479001600.0;
+  const T z = y * log2e + shift;
+  const T n = z - shift;
+  const T r = (y - n * ln2hi) - n * ln2lo;
+  T p = zero + 1.0 / 479001600.0;
   p = p * r + 1.0 / 39916800.0;
   p = p * r + 1.0 / 3628800.0;
   p = p * r + 1.0 / 362880.0;
@@ -32,8 +40,9 @@ inline double expNonPositive(double y) {
   p = p * r + 1.0;
   p = p * r + 1.0;
   // 2^n from the integer held in the low mantissa bits of z (n >= -1022 here, so 2^n is normal).
-  const std::int64_t k = std::bit_cast<std::int64_t>(z) - std::bit_cast<std::int64_t>(shift);
-  return p * std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
+  using Bits = ExpBits<T>;
+  const Bits k = std::bit_cast<Bits>(z) - std::bit_cast<std::int64_t>(shift);
+  return p * std::bit_cast<T>(static_cast<Bits>((k + 1023) << 52));
 }
 
 }  // namespace peristep

@@ -1,6 +1,9 @@
 #include "models/state_based_bonds.hpp"
 
+#include <bit>
 #include <cmath>
+#include <unordered_map>
+#include <utility>
 #include <string>
 
 #include "core/errors.hpp"
@@ -9,6 +12,33 @@
 #include "quadrature/partial_area.hpp"
 
 namespace peristep {
+namespace {
+
+// Appends each bond's direction index to a list, adding its q to the list's table when it is new.
+class DirectionTable {
+ public:
+  explicit DirectionTable(BondList& list) : list_(list) {}
+  void add(double qx, double qy) {
+    const auto [it, fresh] =
+        index_.try_emplace({std::bit_cast<std::uint64_t>(qx), std::bit_cast<std::uint64_t>(qy)},
+                           static_cast<std::uint32_t>(list_.q.size() / 2));
+    if (fresh) {
+      list_.q.push_back(qx);
+      list_.q.push_back(qy);
+    }
+    list_.direction.push_back(it->second);
+  }
+
+ private:
+  using Bits = std::pair<std::uint64_t, std::uint64_t>;
+  struct Hash {
+    std::size_t operator()(const Bits& b) const { return std::hash<std::uint64_t>{}(b.first * 0x9e3779b97f4a7c15ULL ^ b.second); }
+  };
+  BondList& list_;
+  std::unordered_map<Bits, std::uint32_t, Hash> index_;
+};
+
+}  // namespace
 
 StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBondOptions& o) {
   const std::size_t n = cloud.size();
@@ -35,7 +65,9 @@ StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBo
   b.offset.assign(n + 1, 0);
   b.preCrack.offset.assign(n + 1, 0);
   b.neighbour.reserve(nb.bonds());
-  for (auto* v : {&b.qx, &b.qy, &b.w, &b.ws}) v->reserve(nb.bonds());
+  b.direction.reserve(nb.bonds());
+  for (auto* v : {&b.w, &b.ws}) v->reserve(nb.bonds());
+  DirectionTable directions(b), cutDirections(b.preCrack);
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
       const std::uint32_t j = nb.index[k];
@@ -51,10 +83,14 @@ StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBo
       const bool cut = bondCrossesAny(cloud.x[i], cloud.y[i], cloud.x[j], cloud.y[j], o.cuts);
       BondList& list = cut ? b.preCrack : b;
       list.neighbour.push_back(j);
-      list.qx.push_back(dx / (L * sq));
-      list.qy.push_back(dy / (L * sq));
+      (cut ? cutDirections : directions).add(dx / (L * sq), dy / (L * sq));
       list.w.push_back(kij * base);
       if (!cut) b.ws.push_back(base * sq);
+    }
+    for (; (b.neighbour.size() - b.offset[i]) % kBondLanes != 0; ++b.padding) {
+      b.neighbour.push_back(static_cast<std::uint32_t>(i));
+      directions.add(0.0, 0.0);
+      for (auto* v : {&b.w, &b.ws}) v->push_back(0.0);
     }
     b.offset[i + 1] = b.neighbour.size();
     b.preCrack.offset[i + 1] = b.preCrack.neighbour.size();

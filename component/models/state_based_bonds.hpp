@@ -21,16 +21,27 @@ struct StateBasedBondOptions {
 //   q  = e/sqrt(L), so that r = sqrt(L) S = (u_j - u_i) . q   (the argument of f, 001:(3))
 //   w  = kappa_ij omega_j J(L/eps) V_j Vbar_ij      (tensile weight; kappa_ij harmonic mean of kappa)
 //   ws = omega_j J(L/eps) V_j Vbar_ij sqrt(L)       (hydrostatic weight, 001:(2), (15))
-// The unit vector, |xi|, J and the partial-area weight enter the force only through these products,
-// so a bond update of the tensile force reads 28 bytes (index, q, w). Bonds with J = 0 (L >= eps)
-// carry no force and are not stored.
+// The unit vector, |xi|, J and the partial-area weight enter the force only through these products.
+// q depends on the bond's offset only: a lattice has a few hundred to a few thousand distinct q (bit
+// for bit), kept once in a table that stays in cache, and each bond holds its index. So a bond update of
+// the tensile force streams 16 bytes (neighbour, direction, w). Bonds with J = 0 (L >= eps) carry no
+// force and are not stored.
 struct BondList {
   std::vector<std::size_t> offset;      // size points + 1
   std::vector<std::uint32_t> neighbour;
-  std::vector<double> qx, qy, w;
+  std::vector<std::uint32_t> direction; // q of the bond: (q[2 d], q[2 d + 1])
+  std::vector<double> q, w;
+  std::size_t padding = 0;              // stored bonds that are not pairs (see kBondLanes)
 
-  std::size_t bonds() const { return neighbour.size(); }
+  std::size_t bonds() const { return neighbour.size() - padding; }
+  double qx(std::size_t k) const { return q[2 * direction[k]]; }
+  double qy(std::size_t k) const { return q[2 * direction[k] + 1]; }
 };
+
+// The force kernels take the bonds of a point in groups of this many (one AVX-512 register), so each
+// point's list is padded to a multiple of it with bonds to itself that carry nothing (q = w = ws = 0):
+// no scalar remainder loop, which at eps = 4h cost about as much as the vector part (bench/README.md).
+inline constexpr std::size_t kBondLanes = 8;
 
 struct StateBasedBonds : BondList {
   double horizon = 0, cellArea = 0;

@@ -10,13 +10,13 @@ namespace peristep::kernels {
 
 struct ForceArgs {
   const std::size_t* offset;
-  const std::uint32_t* neighbour;
-  const double *qx, *qy, *w, *ws, *omega;
+  const std::uint32_t *neighbour, *direction;
+  const double *q, *w, *ws, *omega;  // q: (qx, qy) pairs indexed by direction
   double beta, tensileScale, hydroScale;
   const double* kg1;  // kappa g'(theta) per point; null: no hydrostatic force
 };
 
-// For i in [i0, i1), with r = (u_j - u_i).q over the bonds of i:
+// For i in [i0, i1), with r = (u_j - u_i).q over the bonds of i (in groups of kBondLanes):
 //   f_i = omega_i [tensileScale sum w r exp(-beta r^2) q + hydroScale sum ws (kg1_i + kg1_j) q].
 void stateBasedForce(const ForceArgs& a, std::size_t i0, std::size_t i1, const double* u, double* f);
 

@@ -30,12 +30,12 @@ void StateBasedModel::forceDerivative(const double* u, const double* du, double*
     double fx = 0, fy = 0;
     for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) {
       const std::size_t j = b.neighbour[k];
-      const double r = (u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k];
-      const double dr = (du[2 * j] - dux) * b.qx[k] + (du[2 * j + 1] - duy) * b.qy[k];
+      const double r = (u[2 * j] - ux) * b.qx(k) + (u[2 * j + 1] - uy) * b.qy(k);
+      const double dr = (du[2 * j] - dux) * b.qx(k) + (du[2 * j + 1] - duy) * b.qy(k);
       // f''(r)/(2 c beta) = (1 - 2 beta r^2) exp(-beta r^2)
       const double t = b.w[k] * (1.0 - 2.0 * beta * r * r) * std::exp(-beta * r * r) * dr;
-      fx += t * b.qx[k];
-      fy += t * b.qy[k];
+      fx += t * b.qx(k);
+      fy += t * b.qy(k);
     }
     fx *= tensileScale_;
     fy *= tensileScale_;
@@ -43,8 +43,8 @@ void StateBasedModel::forceDerivative(const double* u, const double* du, double*
       double hx = 0, hy = 0;
       for (std::size_t k = b.offset[i]; k < b.offset[i + 1]; ++k) {
         const double s = b.ws[k] * (dkg1[i] + dkg1[b.neighbour[k]]);
-        hx += s * b.qx[k];
-        hy += s * b.qy[k];
+        hx += s * b.qx(k);
+        hy += s * b.qy(k);
       }
       fx += hydroScale_ * hx;
       fy += hydroScale_ * hy;
@@ -67,9 +67,9 @@ Eigen::SparseMatrix<double> StateBasedModel::tangent(const double* u) {
     double dxx = 0, dxy = 0, dyy = 0;
     for (std::size_t k = b.offset[iu]; k < b.offset[iu + 1]; ++k) {
       const auto j = static_cast<Eigen::Index>(b.neighbour[k]);
-      const double r = (u[2 * j] - ux) * b.qx[k] + (u[2 * j + 1] - uy) * b.qy[k];
+      const double r = (u[2 * j] - ux) * b.qx(k) + (u[2 * j + 1] - uy) * b.qy(k);
       const double a = tensileScale_ * b.omega[iu] * b.w[k] * (1.0 - 2.0 * beta * r * r) * std::exp(-beta * r * r);
-      const double axx = a * b.qx[k] * b.qx[k], axy = a * b.qx[k] * b.qy[k], ayy = a * b.qy[k] * b.qy[k];
+      const double axx = a * b.qx(k) * b.qx(k), axy = a * b.qx(k) * b.qy(k), ayy = a * b.qy(k) * b.qy(k);
       t.emplace_back(2 * i, 2 * j, axx);
       t.emplace_back(2 * i, 2 * j + 1, axy);
       t.emplace_back(2 * i + 1, 2 * j, axy);
@@ -96,12 +96,12 @@ Eigen::SparseMatrix<double> StateBasedModel::tangent(const double* u) {
     const auto iu = static_cast<std::size_t>(i);
     for (std::size_t k = b.offset[iu]; k < b.offset[iu + 1]; ++k) {
       const auto j = static_cast<Eigen::Index>(b.neighbour[k]);
-      const double gx = thetaScale_ * b.ws[k] * b.qx[k], gy = thetaScale_ * b.ws[k] * b.qy[k];
+      const double gx = thetaScale_ * b.ws[k] * b.qx(k), gy = thetaScale_ * b.ws[k] * b.qy(k);
       tg.emplace_back(i, 2 * j, gx);
       tg.emplace_back(i, 2 * j + 1, gy);
       tg.emplace_back(i, 2 * i, -gx);
       tg.emplace_back(i, 2 * i + 1, -gy);
-      const double hx = hydroScale_ * b.omega[iu] * b.ws[k] * b.qx[k], hy = hydroScale_ * b.omega[iu] * b.ws[k] * b.qy[k];
+      const double hx = hydroScale_ * b.omega[iu] * b.ws[k] * b.qx(k), hy = hydroScale_ * b.omega[iu] * b.ws[k] * b.qy(k);
       th.emplace_back(2 * i, i, hx);
       th.emplace_back(2 * i + 1, i, hy);
       th.emplace_back(2 * i, j, hx);

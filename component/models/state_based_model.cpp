@@ -36,7 +36,7 @@ StateBasedModel::StateBasedModel(const StateBasedMaterial& material, StateBasedB
 // r = sqrt|xi| S of pair k of point i (001:(6)): (u_j - u_i) . q with q = e/sqrt|xi| precomputed.
 static inline double pairStretch(const BondList& l, std::size_t k, const double* u, double ux, double uy) {
   const std::size_t j = l.neighbour[k];
-  return (u[2 * j] - ux) * l.qx[k] + (u[2 * j + 1] - uy) * l.qy[k];
+  return (u[2 * j] - ux) * l.qx(k) + (u[2 * j + 1] - uy) * l.qy(k);
 }
 
 void StateBasedModel::hydrostaticStrain(const double* u, double* theta) const {
@@ -54,8 +54,8 @@ void StateBasedModel::updateHydrostatic(const double* u) {
 
 kernels::ForceArgs StateBasedModel::kernelArgs() const {
   const StateBasedBonds& b = bonds_;
-  return {b.offset.data(), b.neighbour.data(), b.qx.data(),  b.qy.data(),  b.w.data(),
-          b.ws.data(),     b.omega.data(),     material_.f.beta, tensileScale_, hydroScale_,
+  return {b.offset.data(), b.neighbour.data(), b.direction.data(), b.q.data(),  b.w.data(),
+          b.ws.data(),     b.omega.data(),     material_.f.beta,   tensileScale_, hydroScale_,
           hydrostatic_ ? kg1_.data() : nullptr};
 }
 
