@@ -2,8 +2,6 @@
 // exp(y) for y <= 0 in plain arithmetic, so that the compiler can vectorize the bond loops that
 // evaluate f'(r) = 2 c beta r exp(-beta r^2) (a call to the libm exp blocks vectorization).
 // Accuracy: a few ulp (relative error below 1e-15) on [-708, 0]; below -708 it returns exp(-708).
-// The clamp is a branch that GCC if-converts into a vector select only under -fno-trapping-math
-// (component/CMakeLists.txt sets it on models/state_based_kernels.cpp).
 #include <bit>
 #include <cstdint>
 #include <type_traits>
