@@ -94,7 +94,9 @@ int main(int argc, char** argv) {
         table.row(e);
       });
     }
-    std::printf("wall time %.1f s for %ld steps, peak memory %.0f MB\n", clock.seconds(), r.stats.steps,
+    std::printf("wall time %.1f s for %ld steps (%.3e bond-updates/s), peak memory %.0f MB\n", clock.seconds(),
+                r.stats.steps,
+                static_cast<double>(scene.model->bonds().bonds()) * static_cast<double>(r.stats.steps) / clock.seconds(),
                 static_cast<double>(peakMemoryBytes()) / 1e6);
     printCrackBands(scene, u, r.records.back().time);
   } catch (const std::exception& e) {
