@@ -20,7 +20,8 @@ namespace peristep {
 
 class CrackZoneSolver {
  public:
-  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs) : nb_(nb), dofs_(dofs) {}
+  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision = FactorPrecision::Double)
+      : nb_(nb), dofs_(dofs), sparse_(precision) {}
 
   // Factorizes A (kept alive by the caller) with the zone of `corePoints` (ascending) eliminated last.
   void factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints);
@@ -52,6 +53,9 @@ class CrackZoneSolver {
 
   const std::vector<std::size_t>& corePoints() const { return core_; }
   int denseFactorizations() const { return dense_.factorizations(); }
+  // Solves with the factors so far (condensation, dense zone solve, expansion), in refinement and GMRES.
+  std::int64_t substitutions() const { return substitutions_; }
+  std::int64_t factorEntries() const { return sparse_.factorEntries(); }
 
  private:
   void solveOnce(std::span<const double> b, std::span<double> x);
@@ -78,6 +82,7 @@ class CrackZoneSolver {
   std::vector<std::int64_t> zone_;       // zone unknowns, ascending
   std::vector<std::int32_t> zoneIndex_;  // per unknown: position in zone_, -1 outside
   std::vector<double> reduced_, xZone_;
+  std::int64_t substitutions_ = 0;
 };
 
 }  // namespace peristep
