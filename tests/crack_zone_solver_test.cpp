@@ -59,8 +59,9 @@ TEST_CASE("MUMPS with a Schur set: S, condensation and expansion give A's soluti
   for (std::int64_t i = 0; i < A.rows; ++i)
     if (std::find(zone.begin(), zone.end(), i) == zone.end()) position[static_cast<std::size_t>(i)] = next++;
   for (std::int64_t i : zone) position[static_cast<std::size_t>(i)] = next++;
+  const std::vector<double> unscaled(static_cast<std::size_t>(A.rows), 1.0);
   SchurFactorization f;
-  f.factorize(A, zone, position);
+  f.factorize(A, unscaled, zone, position);
   const Eigen::MatrixXd D = dense(A);
   const auto z = static_cast<Eigen::Index>(zone.size());
   std::vector<int> rest;
@@ -81,7 +82,7 @@ TEST_CASE("MUMPS with a Schur set: S, condensation and expansion give A's soluti
 
   SECTION("single-precision factors give S and the solve to single precision, in double") {
     SchurFactorization single(FactorPrecision::Single);
-    single.factorize(A, zone, position);
+    single.factorize(A, unscaled, zone, position);
     const Eigen::Map<const Eigen::MatrixXd> S32(single.schurComplement().data(), z, z);
     const double error = (S32 - expected).norm() / expected.norm();
     CHECK(error <= 1e-6);
@@ -94,7 +95,7 @@ TEST_CASE("MUMPS with a Schur set: S, condensation and expansion give A's soluti
   SECTION("an empty Schur set is a plain solve") {
     std::vector<std::int32_t> natural(static_cast<std::size_t>(A.rows));
     std::iota(natural.begin(), natural.end(), 0);
-    f.factorize(A, {}, natural);
+    f.factorize(A, unscaled, {}, natural);
     f.solve(b, x);
     CHECK((Eigen::Map<const Eigen::VectorXd>(x.data(), A.rows) - exact).norm() <= 1e-12 * exact.norm());
   }

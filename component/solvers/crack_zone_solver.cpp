@@ -112,13 +112,7 @@ void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> cor
   for (std::int64_t r = 0; r < A.rows; ++r)
     for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
       if (A.col[k] == r && A.value[k] != 0.0) scale_[static_cast<std::size_t>(r)] = 1.0 / std::sqrt(std::abs(A.value[k]));
-  {  // MUMPS reads the scaled matrix only while it factorizes
-    CsrMatrix scaled = A;
-    for (std::int64_t r = 0; r < A.rows; ++r)
-      for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
-        scaled.value[k] *= scale_[static_cast<std::size_t>(r)] * scale_[static_cast<std::size_t>(A.col[k])];
-    sparse_.factorize(scaled, zone_, pivotOrder());
-  }
+  sparse_.factorize(A, scale_, zone_, pivotOrder());
   dense_.reset(sparse_.takeSchurComplement());
   reduced_.resize(zone_.size());
   xZone_.resize(zone_.size());

@@ -19,8 +19,8 @@ namespace peristep {
 class SchurFactorization::Backend {
  public:
   virtual ~Backend() = default;
-  virtual void factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
-                         const std::vector<std::int32_t>& position) = 0;
+  virtual void factorize(const CsrMatrix& A, std::span<const double> scale,
+                         const std::vector<std::int64_t>& schurUnknowns, const std::vector<std::int32_t>& position) = 0;
   virtual void condense(std::span<const double> b, std::span<double> reduced) = 0;
   virtual void expand(std::span<const double> xZ, std::span<double> x) = 0;
   virtual void solve(std::span<const double> b, std::span<double> x) = 0;
@@ -62,25 +62,6 @@ struct Workspace {
   }
 };
 
-// v converted to Real; no copy when it already is.
-template <class Real>
-class AsReal {
- public:
-  explicit AsReal(std::span<const double> v) {
-    if constexpr (std::is_same_v<Real, double>) {
-      data_ = const_cast<double*>(v.data());  // MUMPS reads these inputs, it does not write them
-    } else {
-      copy_.assign(v.begin(), v.end());
-      data_ = copy_.data();
-    }
-  }
-  Real* data() { return data_; }
-
- private:
-  std::vector<Real> copy_;
-  Real* data_;
-};
-
 template <class Real>
 class Mumps final : public SchurFactorization::Backend {
  public:
@@ -112,7 +93,7 @@ class Mumps final : public SchurFactorization::Backend {
     MumpsApi<Real>::run(id_);
   }
 
-  void factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
+  void factorize(const CsrMatrix& A, std::span<const double> scale, const std::vector<std::int64_t>& schurUnknowns,
                  const std::vector<std::int32_t>& position) override {
     require(A.rows == A.cols, "mumps: the matrix must be square");
     if (rowIndex_.empty()) {
@@ -129,7 +110,12 @@ class Mumps final : public SchurFactorization::Backend {
     id_.nnz = A.nonZeros();
     id_.irn = rowIndex_.data();
     id_.jcn = colIndex_.data();
-    AsReal<Real> values(A.value);  // read by MUMPS while it factorizes only
+    require(static_cast<std::int64_t>(scale.size()) == A.rows, "mumps: one scale factor per unknown");
+    std::vector<Real> values(rowIndex_.size());  // D A D in Real, read by MUMPS while it factorizes only
+    for (std::int64_t r = 0; r < A.rows; ++r)
+      for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
+        values[static_cast<std::size_t>(k)] = static_cast<Real>(
+            A.value[k] * (scale[static_cast<std::size_t>(r)] * scale[static_cast<std::size_t>(A.col[k])]));
     id_.a = values.data();
     require(static_cast<std::int64_t>(position.size()) == A.rows, "mumps: one pivot position per unknown");
     std::vector<int> order(position.size());
@@ -275,9 +261,10 @@ SchurFactorization::SchurFactorization(FactorPrecision precision) : precision_(p
 
 SchurFactorization::~SchurFactorization() = default;
 
-void SchurFactorization::factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
+void SchurFactorization::factorize(const CsrMatrix& A, std::span<const double> scale,
+                                   const std::vector<std::int64_t>& schurUnknowns,
                                    const std::vector<std::int32_t>& position) {
-  backend_->factorize(A, schurUnknowns, position);
+  backend_->factorize(A, scale, schurUnknowns, position);
 }
 
 const std::vector<double>& SchurFactorization::schurComplement() const { return backend_->schur; }

@@ -26,11 +26,11 @@ class SchurFactorization {
 
   FactorPrecision precision() const { return precision_; }
 
-  // Factorizes A (square, its pattern fixed for the lifetime of this object) with `schurUnknowns`
-  // (ascending, possibly empty) eliminated last, in the order `position` (the pivot position of each
-  // unknown, the Schur unknowns last). A is read during this call only. The analysis is repeated only
-  // when the set or the order changes.
-  void factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
+  // Factorizes D A D (D = diag(scale); A square, its pattern fixed for the lifetime of this object) with
+  // `schurUnknowns` (ascending, possibly empty) eliminated last, in the order `position` (the pivot
+  // position of each unknown, the Schur unknowns last). A is read during this call only. The analysis is
+  // repeated only when the set or the order changes. S and the solves below are those of D A D.
+  void factorize(const CsrMatrix& A, std::span<const double> scale, const std::vector<std::int64_t>& schurUnknowns,
                  const std::vector<std::int32_t>& position);
 
   // S, column-major, size |Z| x |Z|.
