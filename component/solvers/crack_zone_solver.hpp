@@ -34,9 +34,9 @@ class CrackZoneSolver {
   // solver cannot take up: solveIterative() handles them).
   std::size_t update(const CsrMatrix& A, std::span<const std::size_t> points);
 
-  // x = A^-1 b for the current A (the factorized one plus the updates), refined against A until the
-  // componentwise backward error max_i |b - A x|_i / (|A| |x| + |b|)_i is at most tol; returns the number
-  // of refinement steps.
+  // x = A^-1 b for the current A (the factorized one plus the updates), refined from the given x against A
+  // until the componentwise backward error max_i |b - A x|_i / (|A| |x| + |b|)_i is at most tol; returns
+  // the number of solves with the factors.
   int solve(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol);
 
   // Checkpoints: the dense solver's state is a function of the matrix its LU was last computed with (base)
