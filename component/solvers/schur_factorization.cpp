@@ -79,7 +79,7 @@ class Mumps final : public SchurFactorization::Backend {
     icntl(4) = 0;
     // The analysis must depend on the pattern and the Schur set only, not on values (it is reused across
     // factorizations, and a restored run must factor as the original): no value-based column permutation
-    // or scaling (the caller scales the matrix).
+    // or scaling (the caller's D scales the matrix).
     icntl(6) = 0;
     icntl(8) = 0;
     // The caller's ordering: with a Schur set MUMPS falls back to AMD (2.3x the factors of nested
