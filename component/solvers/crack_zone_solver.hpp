@@ -20,7 +20,7 @@ namespace peristep {
 
 class CrackZoneSolver {
  public:
-  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision = FactorPrecision::Double)
+  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision)
       : nb_(nb), dofs_(dofs), sparse_(precision) {}
 
   // Factorizes A (kept alive by the caller) with the zone of `corePoints` (ascending) eliminated last.
