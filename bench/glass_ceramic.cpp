@@ -80,6 +80,7 @@ struct RunOptions {
   double hUm, fraction, stepUm;
   std::uint64_t seed;
   FactorizationReuse driver;
+  FactorPrecision factors;
   bool operator==(const RunOptions&) const = default;
 };
 
@@ -147,6 +148,12 @@ int main(int argc, char** argv) try {
       ->capture_default_str()
       ->check(CLI::IsMember(drivers));
   app.add_flag("--reference", reference, "short for --driver reference");
+  const std::map<std::string, FactorPrecision> precisions{{"double", FactorPrecision::Double},
+                                                          {"single", FactorPrecision::Single}};
+  std::string factors = kZoneFactorPrecision == FactorPrecision::Single ? "single" : "double";
+  app.add_option("--factors", factors, "precision of the crack zone's sparse factors (refined in double)")
+      ->capture_default_str()
+      ->check(CLI::IsMember(precisions));
   app.add_option("--csv", csvPath, "load-displacement curve and per-step profile (CSV)");
   app.add_option("--png", pngPath, "final damage picture (PNG)");
   app.add_option("--checkpoint", checkpointPath, "checkpoint file: saved while running, continued from if present");
@@ -160,6 +167,7 @@ int main(int argc, char** argv) try {
   spec.linearSolver = linearSolverKind(solver);
   if (reference) driver = "reference";
   spec.reuse = drivers.at(driver);
+  spec.zonePrecision = precisions.at(factors);
   if (spec.reuse != FactorizationReuse::CrackZone) {
     // Keep freed memory in the process: every UMFPACK factorization and assembly allocates (and frees)
     // hundreds of MB to GB of the same sizes, and from fresh mmap'd pages each costs page faults. h = 4
@@ -178,10 +186,13 @@ int main(int argc, char** argv) try {
   Stopwatch timing;
   const double factorizationSeconds = oneFactorizationSeconds(g, solver);
   const double timingSeconds = timing.seconds();  // not part of the specimen's wall time
-  std::printf("# driver: %s; one factorization of the initial matrix (%s) %.2f s (median of 3)\n", driver.c_str(),
-              solver.c_str(), factorizationSeconds);
+  // The timing's solver (UMFPACK: ~4 GB at h = 2 um) may set the process' peak: the run's own is counted apart.
+  const std::size_t setupPeak = peakMemoryBytes();
+  const bool runPeakKnown = resetPeakMemory();
+  std::printf("# driver: %s, %s factors; one factorization of the initial matrix (%s) %.2f s (median of 3)\n",
+              driver.c_str(), factors.c_str(), solver.c_str(), factorizationSeconds);
   Progress run;
-  run.options = {hUm, fraction, stepUm, seed, spec.reuse};
+  run.options = {hUm, fraction, stepUm, seed, spec.reuse, spec.zonePrecision};
   const bool resumed = !checkpointPath.empty() && std::filesystem::exists(checkpointPath);
   if (resumed) {
     run = readCheckpoint(checkpointPath, run.options, g);
@@ -226,9 +237,11 @@ int main(int argc, char** argv) try {
                   r.factorizations, r.krylovIterations, elapsed());
   }
   std::printf("profile: %d load steps, %d solves, %d factorizations %.1f s, %d GMRES iterations, %d dense zone LUs, "
-              "solves %.1f s, assembly %.1f s, bond checks %.1f s\n",
+              "%lld substitutions, solves %.1f s, assembly %.1f s, bond checks %.1f s; "
+              "last zone factors %lld entries\n",
               run.step - 1, sum.subIterations, sum.factorizations, sum.factorizationSeconds, sum.krylovIterations,
-              sum.denseFactorizations, sum.solveSeconds, sum.assemblySeconds, sum.bondCheckSeconds);
+              sum.denseFactorizations, static_cast<long long>(sum.substitutions), sum.solveSeconds,
+              sum.assemblySeconds, sum.bondCheckSeconds, static_cast<long long>(g.solver().zoneFactorEntries()));
   std::printf("factorization ratio: wall %.1f s / one factorization %.2f s = %.1f\n", elapsed(), factorizationSeconds,
               elapsed() / factorizationSeconds);
   std::uint64_t history = run.history;
@@ -240,8 +253,11 @@ int main(int argc, char** argv) try {
   std::printf("crack length: glass %.1f um (%.0f%%), crystal %.1f um (%.0f%%), interface %.1f um (%.0f%%); W = %.1f um\n",
               L.glass * 1e6, 100 * L.glass / L.total(), L.crystal * 1e6, 100 * L.crystal / L.total(),
               L.interface * 1e6, 100 * L.interface / L.total(), g.projectedCrackLength() * 1e6);
-  std::printf("G_IC = %.3f J/m^2, K_IC = %.3f MPa m^0.5, wall %.1f s, peak %.0f MB\n", g.energyReleaseRate(),
-              g.toughnessKIC() / 1e6, elapsed(), static_cast<double>(peakMemoryBytes()) / 1048576.0);
+  const double runPeakMB = static_cast<double>(peakMemoryBytes()) / 1048576.0;
+  std::printf("G_IC = %.3f J/m^2, K_IC = %.3f MPa m^0.5, wall %.1f s, peak %.0f MB", g.energyReleaseRate(),
+              g.toughnessKIC() / 1e6, elapsed(), std::max(static_cast<double>(setupPeak) / 1048576.0, runPeakMB));
+  if (runPeakKnown) std::printf(" (the run after the timing: %.0f MB)", runPeakMB);
+  std::printf("\n");
   if (!pngPath.empty()) {
     host::writePng(pngPath, host::damagePicture(spec.grid.ny, spec.grid.nx, g.damage(), g.youngsModulus()));
     std::printf("damage picture: %s\n", pngPath.c_str());

@@ -79,7 +79,7 @@ GlassCeramicSpecimen::GlassCeramicSpecimen(const GlassCeramicSpec& spec) : spec_
     topCollar_[p] = isTop;
   }
   fracture_ = std::make_unique<QuasiStaticFracture>(disc_, std::move(mat), std::move(bonds), std::move(unit),
-                                                    spec.linearSolver, spec.reuse);
+                                                    spec.linearSolver, spec.reuse, spec.zonePrecision);
 }
 
 LoadStepReport GlassCeramicSpecimen::advance(double UD) { return fracture_->advance(UD); }

@@ -19,6 +19,7 @@ struct GlassCeramicSpec {
   PhaseConstants phases{80e9, 133e9, 6.59, 86.35, 0.25};  // 000 Table 1
   LinearSolverKind linearSolver = LinearSolverKind::Umfpack;
   FactorizationReuse reuse = FactorizationReuse::StaleAsPreconditioner;
+  FactorPrecision zonePrecision = kZoneFactorPrecision;  // CrackZone's sparse factors
   // Crystal field R per point (collar included), e.g. the PCA expansion 000:(5.5); empty: the
   // microstructure generated from `seed`. E and G are affine in R; the crack shares count a point with
   // R >= 1/2 as crystal.

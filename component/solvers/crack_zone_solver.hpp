@@ -20,7 +20,8 @@ namespace peristep {
 
 class CrackZoneSolver {
  public:
-  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs) : nb_(nb), dofs_(dofs) {}
+  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision)
+      : nb_(nb), dofs_(dofs), sparse_(precision) {}
 
   // Factorizes A (kept alive by the caller) with the zone of `corePoints` (ascending) eliminated last.
   void factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints);
@@ -33,9 +34,9 @@ class CrackZoneSolver {
   // solver cannot take up: solveIterative() handles them).
   std::size_t update(const CsrMatrix& A, std::span<const std::size_t> points);
 
-  // x = A^-1 b for the current A (the factorized one plus the updates), refined against A until the
-  // componentwise backward error max_i |b - A x|_i / (|A| |x| + |b|)_i is at most tol; returns the number
-  // of refinement steps.
+  // x = A^-1 b for the current A (the factorized one plus the updates), refined from the given x against A
+  // until the componentwise backward error max_i |b - A x|_i / (|A| |x| + |b|)_i is at most tol; returns
+  // the number of solves with the factors.
   int solve(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol);
 
   // Checkpoints: the dense solver's state is a function of the matrix its LU was last computed with (base)
@@ -52,6 +53,9 @@ class CrackZoneSolver {
 
   const std::vector<std::size_t>& corePoints() const { return core_; }
   int denseFactorizations() const { return dense_.factorizations(); }
+  // Solves with the factors so far (condensation, dense zone solve, expansion), in refinement and GMRES.
+  std::int64_t substitutions() const { return substitutions_; }
+  std::int64_t factorEntries() const { return sparse_.factorEntries(); }
 
  private:
   void solveOnce(std::span<const double> b, std::span<double> x);
@@ -78,6 +82,7 @@ class CrackZoneSolver {
   std::vector<std::int64_t> zone_;       // zone unknowns, ascending
   std::vector<std::int32_t> zoneIndex_;  // per unknown: position in zone_, -1 outside
   std::vector<double> reduced_, xZone_;
+  std::int64_t substitutions_ = 0;
 };
 
 }  // namespace peristep

@@ -43,7 +43,8 @@ double springStiffness(double mu, double delta) { return kSpringRatio * 24.0 * m
 
 QuasiStaticFracture::QuasiStaticFracture(std::shared_ptr<const LpsDiscretization> disc, FractureMaterial material,
                                          BondState bonds, std::vector<double> unitCollarDisplacement,
-                                         LinearSolverKind solver, FactorizationReuse reuse)
+                                         LinearSolverKind solver, FactorizationReuse reuse,
+                                         FactorPrecision zonePrecision)
     : disc_(std::move(disc)),
       material_(std::move(material)),
       bonds_(std::move(bonds)),
@@ -59,7 +60,7 @@ QuasiStaticFracture::QuasiStaticFracture(std::shared_ptr<const LpsDiscretization
   factorizationCost_ = factorizationCostInIterations(disc_->dofs.size);
   assemble(nullptr);
   if (reuse_ == FactorizationReuse::CrackZone) {
-    zone_ = std::make_unique<CrackZoneSolver>(disc_->neighbours, disc_->dofs);
+    zone_ = std::make_unique<CrackZoneSolver>(disc_->neighbours, disc_->dofs, zonePrecision);
     return;
   }
   solver_ = makeLinearSolver(solver);
@@ -280,6 +281,7 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
   if (!hasFactorization_) factorizeZone(report);
   Stopwatch clock;
   const int dense = zone_->denseFactorizations();
+  const std::int64_t substitutions = zone_->substitutions();
   outsideZone_ = zone_->update(system_.A, dirty_) > 0 || outsideZone_;
   dirty_.clear();
   bool solved = !outsideZone_;
@@ -296,6 +298,7 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
   if (!outsideZone_) zone_->solve(system_.A, rhs, x_, kKrylovTolerance);
   if (zone_->denseFactorizations() != dense) denseBase_ = brokenByLoading_.size();
   report.denseFactorizations += zone_->denseFactorizations() - dense;
+  report.substitutions += zone_->substitutions() - substitutions;
   report.solveSeconds += clock.lap();
 }
 

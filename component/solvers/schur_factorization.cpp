@@ -1,6 +1,7 @@
 #include "solvers/schur_factorization.hpp"
 
 #include <dmumps_c.h>
+#include <smumps_c.h>
 #include <sys/mman.h>
 
 #include <algorithm>
@@ -8,179 +9,272 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "core/errors.hpp"
 
 namespace peristep {
 
-struct SchurFactorization::Mumps {
-  DMUMPS_STRUC_C id{};
+class SchurFactorization::Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual void factorize(const CsrMatrix& A, std::span<const double> scale,
+                         const std::vector<std::int64_t>& schurUnknowns, const std::vector<std::int32_t>& position) = 0;
+  virtual void condense(std::span<const double> b, std::span<double> reduced) = 0;
+  virtual void expand(std::span<const double> xZ, std::span<double> x) = 0;
+  virtual void solve(std::span<const double> b, std::span<double> x) = 0;
+  std::vector<double> schur;  // column-major
+  std::int64_t factorEntries = 0;
 };
 
 namespace {
+
 constexpr int kInitialize = -1, kTerminate = -2, kAnalyze = 1, kFactorize = 2, kSolve = 3;
 constexpr int kHostWorks = 1, kUnsymmetric = 0, kCommSelf = -987654;  // MUMPS' sequential library
-// ICNTL / INFOG are 1-based in MUMPS' documentation.
-int& icntl(DMUMPS_STRUC_C& id, int i) { return id.icntl[i - 1]; }
-}  // namespace
 
-SchurFactorization::SchurFactorization() : mumps_(std::make_unique<Mumps>()) {
-  DMUMPS_STRUC_C& id = mumps_->id;
-  id.job = kInitialize;
-  id.par = kHostWorks;
-  id.sym = kUnsymmetric;
-  id.comm_fortran = kCommSelf;
-  dmumps_c(&id);
-  if (id.infog[0] < 0) throw SolverFailure("mumps: initialization failed with INFOG(1) = " + std::to_string(id.infog[0]));
-  for (int stream : {1, 2, 3}) icntl(id, stream) = -1;  // no output: the component logs through FMI only
-  icntl(id, 4) = 0;
-  // The analysis must depend on the pattern and the Schur set only, not on values (it is reused across
-  // factorizations, and a restored run must factor as the original): no value-based column permutation
-  // or scaling (the caller scales the matrix).
-  icntl(id, 6) = 0;
-  icntl(id, 8) = 0;
-  // The caller's ordering: with a Schur set MUMPS falls back to AMD (2.3x the factors of nested
-  // dissection at h = 4 um), Debian's MUMPS has no METIS, and its SCOTCH orders differently from run to
-  // run (threads), so that two runs of the same specimen would not repeat each other bit for bit.
-  icntl(id, 7) = 1;
-  icntl(id, 14) = 40;  // workspace margin for delayed pivots, in percent
-}
+// MUMPS' C interface per precision: the same fields under another struct name and scalar type.
+template <class Real>
+struct MumpsApi;
+template <>
+struct MumpsApi<double> {
+  using Struc = DMUMPS_STRUC_C;
+  static void run(Struc& id) { dmumps_c(&id); }
+};
+template <>
+struct MumpsApi<float> {
+  using Struc = SMUMPS_STRUC_C;
+  static void run(Struc& id) { smumps_c(&id); }
+};
 
-SchurFactorization::~SchurFactorization() {
-  mumps_->id.job = kTerminate;
-  dmumps_c(&mumps_->id);
-}
+// Memory mapped once and kept: MUMPS's main work array across factorizations.
+struct Workspace {
+  void* data = nullptr;
+  std::size_t bytes = 0;
+  Workspace() = default;
+  Workspace& operator=(Workspace&& o) noexcept {
+    std::swap(data, o.data);
+    std::swap(bytes, o.bytes);
+    return *this;
+  }
+  ~Workspace() {
+    if (data) munmap(data, bytes);
+  }
+};
 
-void SchurFactorization::call(int job, const char* what) {
-  DMUMPS_STRUC_C& id = mumps_->id;
-  for (int attempt = 0;; ++attempt) {
-    if (job == kFactorize) useWorkspace();
-    id.job = job;
-    dmumps_c(&id);
-    if (job == kAnalyze && id.infog[0] >= 0)  // INFO(8): entries of S, in millions when negative
-      workspaceEstimate_ = id.info[7] >= 0 ? id.info[7] : -static_cast<std::int64_t>(id.info[7]) * 1000000;
-    // -8/-9: the estimated workspace was too small (more delayed pivots than analysed): grow it, retry.
-    if ((id.infog[0] == -8 || id.infog[0] == -9) && job == kFactorize && attempt < 4) {
-      icntl(id, 14) *= 2;
-      continue;
+template <class Real>
+class Mumps final : public SchurFactorization::Backend {
+ public:
+  using Struc = typename MumpsApi<Real>::Struc;
+
+  Mumps() {
+    id_.job = kInitialize;
+    id_.par = kHostWorks;
+    id_.sym = kUnsymmetric;
+    id_.comm_fortran = kCommSelf;
+    MumpsApi<Real>::run(id_);
+    if (id_.infog[0] < 0)
+      throw SolverFailure("mumps: initialization failed with INFOG(1) = " + std::to_string(id_.infog[0]));
+    for (int stream : {1, 2, 3}) icntl(stream) = -1;  // no output: the component logs through FMI only
+    icntl(4) = 0;
+    // The analysis must depend on the pattern and the Schur set only, not on values (it is reused across
+    // factorizations, and a restored run must factor as the original): no value-based column permutation
+    // or scaling (the caller's D scales the matrix).
+    icntl(6) = 0;
+    icntl(8) = 0;
+    // The caller's ordering: with a Schur set MUMPS falls back to AMD (2.3x the factors of nested
+    // dissection at h = 4 um), Debian's MUMPS has no METIS, and its SCOTCH orders differently from run to
+    // run (threads), so that two runs of the same specimen would not repeat each other bit for bit.
+    icntl(7) = 1;
+    icntl(14) = 40;  // workspace margin for delayed pivots, in percent
+  }
+  ~Mumps() override {
+    id_.job = kTerminate;
+    MumpsApi<Real>::run(id_);
+  }
+
+  void factorize(const CsrMatrix& A, std::span<const double> scale, const std::vector<std::int64_t>& schurUnknowns,
+                 const std::vector<std::int32_t>& position) override {
+    require(A.rows == A.cols, "mumps: the matrix must be square");
+    if (rowIndex_.empty()) {
+      rowIndex_.resize(static_cast<std::size_t>(A.nonZeros()));
+      colIndex_.resize(rowIndex_.size());
+      for (std::int64_t r = 0; r < A.rows; ++r)
+        for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k) {
+          rowIndex_[static_cast<std::size_t>(k)] = static_cast<int>(r + 1);
+          colIndex_[static_cast<std::size_t>(k)] = static_cast<int>(A.col[static_cast<std::size_t>(k)] + 1);
+        }
     }
-    if (id.infog[0] < 0)
-      throw SolverFailure(std::string("mumps: ") + what + " failed with INFOG(1) = " + std::to_string(id.infog[0]) +
-                          ", INFOG(2) = " + std::to_string(id.infog[1]));
-    return;
-  }
-}
-
-SchurFactorization::Workspace::~Workspace() {
-  if (data) munmap(data, bytes);
-}
-
-void SchurFactorization::useWorkspace() {
-  // MUMPS's main work array S holds the factors and the stack of frontal matrices: ~3 GB at h = 2 um. Its
-  // own allocation maps fresh pages at every factorization (1.1 million page faults each, 330 s of system
-  // time in a full-size run); this one is kept, grown when a zone needs more, and asks for huge pages.
-  DMUMPS_STRUC_C& id = mumps_->id;
-  const std::int64_t entries = workspaceEstimate_ * (100 + icntl(id, 14)) / 100;
-  if (entries <= 0 || entries > std::numeric_limits<int>::max()) {  // LWK_USER is a 32-bit count
-    id.wk_user = nullptr;
-    id.lwk_user = 0;
-    return;
-  }
-  const std::size_t bytes = static_cast<std::size_t>(entries) * sizeof(double);
-  if (bytes > workspace_.bytes) {
-    workspace_ = Workspace{};
-    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (p == MAP_FAILED) throw std::bad_alloc();
-    madvise(p, bytes, MADV_HUGEPAGE);  // a hint: without transparent huge pages it is plain memory
-    workspace_.data = p;
-    workspace_.bytes = bytes;
-  }
-  id.wk_user = static_cast<double*>(workspace_.data);
-  id.lwk_user = static_cast<int>(entries);
-}
-
-void SchurFactorization::factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
-                                   const std::vector<std::int32_t>& position) {
-  DMUMPS_STRUC_C& id = mumps_->id;
-  require(A.rows == A.cols, "mumps: the matrix must be square");
-  if (rowIndex_.empty()) {
-    rowIndex_.resize(static_cast<std::size_t>(A.nonZeros()));
-    colIndex_.resize(rowIndex_.size());
+    require(static_cast<std::size_t>(A.nonZeros()) == rowIndex_.size(), "mumps: the sparsity pattern changed");
+    id_.n = static_cast<int>(A.rows);
+    id_.nnz = A.nonZeros();
+    id_.irn = rowIndex_.data();
+    id_.jcn = colIndex_.data();
+    require(static_cast<std::int64_t>(scale.size()) == A.rows, "mumps: one scale factor per unknown");
+    std::vector<Real> values(rowIndex_.size());  // D A D in Real, read by MUMPS while it factorizes only
     for (std::int64_t r = 0; r < A.rows; ++r)
-      for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k) {
-        rowIndex_[static_cast<std::size_t>(k)] = static_cast<int>(r + 1);
-        colIndex_[static_cast<std::size_t>(k)] = static_cast<int>(A.col[static_cast<std::size_t>(k)] + 1);
+      for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
+        values[static_cast<std::size_t>(k)] = static_cast<Real>(
+            A.value[k] * (scale[static_cast<std::size_t>(r)] * scale[static_cast<std::size_t>(A.col[k])]));
+    id_.a = values.data();
+    require(static_cast<std::int64_t>(position.size()) == A.rows, "mumps: one pivot position per unknown");
+    std::vector<int> order(position.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = position[i] + 1;
+    if (!analyzed_ || schurUnknowns != schurUnknowns_ || order != position_) {
+      schurUnknowns_ = schurUnknowns;
+      position_ = std::move(order);
+      id_.perm_in = position_.data();
+      schurList_.resize(schurUnknowns_.size());
+      for (std::size_t i = 0; i < schurList_.size(); ++i) schurList_[i] = static_cast<int>(schurUnknowns_[i] + 1);
+      const int z = static_cast<int>(schurList_.size());
+      icntl(19) = z > 0 ? 1 : 0;  // centralized Schur complement, by rows
+      id_.size_schur = z;
+      id_.listvar_schur = z > 0 ? schurList_.data() : nullptr;
+      call(kAnalyze, "analysis");
+      analyzed_ = true;
+    }
+    const std::size_t z = schurUnknowns_.size();
+    schur.assign(z * z, 0.0);
+    std::vector<Real> narrow;  // MUMPS writes S in Real: in place when that is double
+    if constexpr (std::is_same_v<Real, double>) {
+      id_.schur = z > 0 ? schur.data() : nullptr;
+    } else {
+      narrow.assign(z * z, Real(0));
+      id_.schur = z > 0 ? narrow.data() : nullptr;
+    }
+    id_.schur_lld = static_cast<int>(z);
+    call(kFactorize, "numeric factorization");
+    id_.a = nullptr;  // the solves do not read A (no iterative refinement or error analysis: ICNTL(10), (11) = 0)
+    id_.schur = nullptr;
+    factorEntries = id_.infog[28] >= 0 ? id_.infog[28] : -static_cast<std::int64_t>(id_.infog[28]) * 1000000;
+    // By rows -> column-major (in place, or widened from the Real copy).
+    for (std::size_t i = 0; i < z; ++i)
+      if constexpr (std::is_same_v<Real, double>) {
+        for (std::size_t j = i + 1; j < z; ++j) std::swap(schur[i * z + j], schur[j * z + i]);
+      } else {
+        for (std::size_t j = 0; j < z; ++j) schur[j * z + i] = narrow[i * z + j];
       }
   }
-  require(static_cast<std::size_t>(A.nonZeros()) == rowIndex_.size(), "mumps: the sparsity pattern changed");
-  id.n = static_cast<int>(A.rows);
-  id.nnz = A.nonZeros();
-  id.irn = rowIndex_.data();
-  id.jcn = colIndex_.data();
-  id.a = const_cast<double*>(A.value.data());  // MUMPS reads A while it factorizes, it does not write it
-  require(static_cast<std::int64_t>(position.size()) == A.rows, "mumps: one pivot position per unknown");
-  std::vector<int> order(position.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = position[i] + 1;
-  if (!analyzed_ || schurUnknowns != schurUnknowns_ || order != position_) {
-    schurUnknowns_ = schurUnknowns;
-    position_ = std::move(order);
-    id.perm_in = position_.data();
-    schurList_.resize(schurUnknowns_.size());
-    for (std::size_t i = 0; i < schurList_.size(); ++i) schurList_[i] = static_cast<int>(schurUnknowns_[i] + 1);
-    const int z = static_cast<int>(schurList_.size());
-    icntl(id, 19) = z > 0 ? 1 : 0;  // centralized Schur complement, by rows
-    id.size_schur = z;
-    id.listvar_schur = z > 0 ? schurList_.data() : nullptr;
-    call(kAnalyze, "analysis");
-    analyzed_ = true;
+
+  void condense(std::span<const double> b, std::span<double> reduced) override {
+    require(reduced.size() == schurUnknowns_.size() && !schurUnknowns_.empty(), "mumps: condense needs a Schur set");
+    rhs_.assign(b.begin(), b.end());
+    std::vector<Real> out(reduced.size());
+    id_.rhs = rhs_.data();
+    id_.nrhs = 1;
+    id_.lrhs = id_.n;
+    id_.redrhs = out.data();
+    id_.lredrhs = static_cast<int>(reduced.size());
+    icntl(26) = 1;  // forward elimination only; b_Z - A_ZF A_FF^-1 b_F into REDRHS
+    call(kSolve, "condensation");
+    std::copy(out.begin(), out.end(), reduced.begin());
   }
-  const std::size_t z = schurUnknowns_.size();
-  schur_.assign(z * z, 0.0);
-  id.schur = z > 0 ? schur_.data() : nullptr;
-  id.schur_lld = static_cast<int>(z);
-  call(kFactorize, "numeric factorization");
-  id.a = nullptr;  // the solves do not read A (no iterative refinement or error analysis: ICNTL(10), (11) = 0)
-  id.schur = nullptr;
-  for (std::size_t i = 0; i < z; ++i)  // by rows -> column-major, in place
-    for (std::size_t j = i + 1; j < z; ++j) std::swap(schur_[i * z + j], schur_[j * z + i]);
+
+  void expand(std::span<const double> xZ, std::span<double> x) override {
+    std::vector<Real> reduced(xZ.begin(), xZ.end());
+    id_.rhs = rhs_.data();  // as condense() left it
+    id_.redrhs = reduced.data();
+    id_.lredrhs = static_cast<int>(reduced.size());
+    icntl(26) = 2;  // backward substitution with x_Z given
+    call(kSolve, "expansion");
+    icntl(26) = 0;
+    std::copy(rhs_.begin(), rhs_.end(), x.begin());
+  }
+
+  void solve(std::span<const double> b, std::span<double> x) override {
+    require(schurUnknowns_.empty(), "mumps: solve() is for a factorization without Schur set");
+    rhs_.assign(b.begin(), b.end());
+    id_.rhs = rhs_.data();
+    id_.nrhs = 1;
+    id_.lrhs = id_.n;
+    icntl(26) = 0;
+    call(kSolve, "solve");
+    std::copy(rhs_.begin(), rhs_.end(), x.begin());
+    for (double v : x)
+      if (!std::isfinite(v)) throw SolverFailure("mumps: solution is not finite (singular system?)");
+  }
+
+ private:
+  int& icntl(int i) { return id_.icntl[i - 1]; }  // 1-based in MUMPS' documentation
+
+  void call(int job, const char* what) {
+    for (int attempt = 0;; ++attempt) {
+      if (job == kFactorize) useWorkspace();
+      id_.job = job;
+      MumpsApi<Real>::run(id_);
+      if (job == kAnalyze && id_.infog[0] >= 0)  // INFO(8): entries of S, in millions when negative
+        workspaceEstimate_ = id_.info[7] >= 0 ? id_.info[7] : -static_cast<std::int64_t>(id_.info[7]) * 1000000;
+      // -8/-9: the estimated workspace was too small (more delayed pivots than analysed): grow it, retry.
+      if ((id_.infog[0] == -8 || id_.infog[0] == -9) && job == kFactorize && attempt < 4) {
+        icntl(14) *= 2;
+        continue;
+      }
+      if (id_.infog[0] < 0)
+        throw SolverFailure(std::string("mumps: ") + what + " failed with INFOG(1) = " + std::to_string(id_.infog[0]) +
+                            ", INFOG(2) = " + std::to_string(id_.infog[1]));
+      return;
+    }
+  }
+
+  void useWorkspace() {
+    // MUMPS's main work array S holds the factors and the stack of frontal matrices: ~3 GB at h = 2 um
+    // in double. Its own allocation maps fresh pages at every factorization (1.1 million page faults each,
+    // 330 s of system time in a full-size run); this one is kept, grown when a zone needs more, and asks
+    // for huge pages.
+    const std::int64_t entries = workspaceEstimate_ * (100 + icntl(14)) / 100;
+    if (entries <= 0 || entries > std::numeric_limits<int>::max()) {  // LWK_USER is a 32-bit count
+      id_.wk_user = nullptr;
+      id_.lwk_user = 0;
+      return;
+    }
+    const std::size_t bytes = static_cast<std::size_t>(entries) * sizeof(Real);
+    if (bytes > workspace_.bytes) {
+      workspace_ = Workspace{};
+      void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+      if (p == MAP_FAILED) throw std::bad_alloc();
+      madvise(p, bytes, MADV_HUGEPAGE);  // a hint: without transparent huge pages it is plain memory
+      workspace_.data = p;
+      workspace_.bytes = bytes;
+    }
+    id_.wk_user = static_cast<Real*>(workspace_.data);
+    id_.lwk_user = static_cast<int>(entries);
+  }
+
+  Workspace workspace_;  // outlives the MUMPS instance: the destructor terminates MUMPS first
+  Struc id_{};
+  std::vector<int> rowIndex_, colIndex_;  // 1-based coordinates of A's entries
+  std::vector<std::int64_t> schurUnknowns_;
+  std::vector<int> schurList_, position_;  // 1-based, for MUMPS
+  std::vector<Real> rhs_;
+  bool analyzed_ = false;
+  std::int64_t workspaceEstimate_ = 0;  // MUMPS' estimate of S after the analysis, entries
+};
+
+}  // namespace
+
+SchurFactorization::SchurFactorization(FactorPrecision precision) : precision_(precision) {
+  if (precision == FactorPrecision::Single)
+    backend_ = std::make_unique<Mumps<float>>();
+  else
+    backend_ = std::make_unique<Mumps<double>>();
 }
+
+SchurFactorization::~SchurFactorization() = default;
+
+void SchurFactorization::factorize(const CsrMatrix& A, std::span<const double> scale,
+                                   const std::vector<std::int64_t>& schurUnknowns,
+                                   const std::vector<std::int32_t>& position) {
+  backend_->factorize(A, scale, schurUnknowns, position);
+}
+
+const std::vector<double>& SchurFactorization::schurComplement() const { return backend_->schur; }
+std::vector<double> SchurFactorization::takeSchurComplement() { return std::move(backend_->schur); }
+std::int64_t SchurFactorization::factorEntries() const { return backend_->factorEntries; }
 
 void SchurFactorization::condense(std::span<const double> b, std::span<double> reduced) {
-  DMUMPS_STRUC_C& id = mumps_->id;
-  require(reduced.size() == schurUnknowns_.size() && !schurUnknowns_.empty(), "mumps: condense needs a Schur set");
-  rhs_.assign(b.begin(), b.end());
-  id.rhs = rhs_.data();
-  id.nrhs = 1;
-  id.lrhs = id.n;
-  id.redrhs = reduced.data();
-  id.lredrhs = static_cast<int>(reduced.size());
-  icntl(id, 26) = 1;  // forward elimination only; b_Z - A_ZF A_FF^-1 b_F into REDRHS
-  call(kSolve, "condensation");
+  backend_->condense(b, reduced);
 }
-
-void SchurFactorization::expand(std::span<const double> xZ, std::span<double> x) {
-  DMUMPS_STRUC_C& id = mumps_->id;
-  std::vector<double> reduced(xZ.begin(), xZ.end());
-  id.rhs = rhs_.data();  // as condense() left it
-  id.redrhs = reduced.data();
-  id.lredrhs = static_cast<int>(reduced.size());
-  icntl(id, 26) = 2;  // backward substitution with x_Z given
-  call(kSolve, "expansion");
-  icntl(id, 26) = 0;
-  std::copy(rhs_.begin(), rhs_.end(), x.begin());
-}
-
-void SchurFactorization::solve(std::span<const double> b, std::span<double> x) {
-  DMUMPS_STRUC_C& id = mumps_->id;
-  require(schurUnknowns_.empty(), "mumps: solve() is for a factorization without Schur set");
-  std::copy(b.begin(), b.end(), x.begin());
-  id.rhs = x.data();
-  id.nrhs = 1;
-  id.lrhs = id.n;
-  icntl(id, 26) = 0;
-  call(kSolve, "solve");
-  for (double v : x)
-    if (!std::isfinite(v)) throw SolverFailure("mumps: solution is not finite (singular system?)");
-}
+void SchurFactorization::expand(std::span<const double> xZ, std::span<double> x) { backend_->expand(xZ, x); }
+void SchurFactorization::solve(std::span<const double> b, std::span<double> x) { backend_->solve(b, x); }
 
 }  // namespace peristep

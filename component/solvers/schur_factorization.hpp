@@ -6,30 +6,38 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "core/csr_matrix.hpp"
 
 namespace peristep {
 
+// Precision of the sparse factors (MUMPS' dmumps or smumps). The interface is double either way: A, S and
+// the vectors are converted at the boundary, so single-precision factors give an approximate solve that
+// the caller refines in double (solvers/crack_zone_solver.hpp).
+enum class FactorPrecision { Double, Single };
+
 class SchurFactorization {
  public:
-  SchurFactorization();
+  explicit SchurFactorization(FactorPrecision precision = FactorPrecision::Double);
   ~SchurFactorization();
   SchurFactorization(const SchurFactorization&) = delete;
   SchurFactorization& operator=(const SchurFactorization&) = delete;
 
-  // Factorizes A (square, its pattern fixed for the lifetime of this object) with `schurUnknowns`
-  // (ascending, possibly empty) eliminated last, in the order `position` (the pivot position of each
-  // unknown, the Schur unknowns last). A is read during this call only. The analysis is repeated only
-  // when the set or the order changes.
-  void factorize(const CsrMatrix& A, const std::vector<std::int64_t>& schurUnknowns,
+  FactorPrecision precision() const { return precision_; }
+
+  // Factorizes D A D (D = diag(scale); A square, its pattern fixed for the lifetime of this object) with
+  // `schurUnknowns` (ascending, possibly empty) eliminated last, in the order `position` (the pivot
+  // position of each unknown, the Schur unknowns last). A is read during this call only. The analysis is
+  // repeated only when the set or the order changes. S and the solves below are those of D A D.
+  void factorize(const CsrMatrix& A, std::span<const double> scale, const std::vector<std::int64_t>& schurUnknowns,
                  const std::vector<std::int32_t>& position);
 
   // S, column-major, size |Z| x |Z|.
-  const std::vector<double>& schurComplement() const { return schur_; }
-  std::vector<double> takeSchurComplement() { return std::move(schur_); }
+  const std::vector<double>& schurComplement() const;
+  std::vector<double> takeSchurComplement();
+  // Entries of the sparse factors of the last factorization (MUMPS' INFOG(29)).
+  std::int64_t factorEntries() const;
 
   // First half of a solve: the reduced right-hand side b_Z - A_ZF A_FF^-1 b_F (size |Z|). The solver keeps
   // the forward-eliminated b for expand().
@@ -39,31 +47,11 @@ class SchurFactorization {
   // Plain solve when Z is empty.
   void solve(std::span<const double> b, std::span<double> x);
 
- private:
-  struct Mumps;
-  // Memory mapped once and kept: MUMPS's main work array across factorizations.
-  struct Workspace {
-    void* data = nullptr;
-    std::size_t bytes = 0;
-    Workspace() = default;
-    Workspace& operator=(Workspace&& o) noexcept {
-      std::swap(data, o.data);
-      std::swap(bytes, o.bytes);
-      return *this;
-    }
-    ~Workspace();
-  };
-  void call(int job, const char* what);
-  void useWorkspace();
+  class Backend;  // one MUMPS instance of either precision (the .cpp)
 
-  std::unique_ptr<Mumps> mumps_;
-  std::vector<int> rowIndex_, colIndex_;  // 1-based coordinates of A's entries
-  std::vector<std::int64_t> schurUnknowns_;
-  std::vector<int> schurList_, position_;  // 1-based, for MUMPS
-  std::vector<double> schur_, rhs_;
-  bool analyzed_ = false;
-  std::int64_t workspaceEstimate_ = 0;  // MUMPS' estimate of S after the analysis, entries
-  Workspace workspace_;  // outlives the MUMPS instance: the destructor terminates MUMPS first
+ private:
+  FactorPrecision precision_;
+  std::unique_ptr<Backend> backend_;
 };
 
 }  // namespace peristep
