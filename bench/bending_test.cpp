@@ -69,6 +69,8 @@ int main(int argc, char** argv) {
   app.add_option("dt_us", dt, "time step [us]")->required()->check(CLI::PositiveNumber);
   app.add_option("T_us", T, "end time [us]")->required()->check(CLI::PositiveNumber);
   app.add_option("csv", csv, "write the energy table as CSV to this file");
+  app.add_option("--nu", spec.material.poissonRatio, "Poisson ratio (0.25: tensile force only; other values add the hydrostatic force)")
+      ->capture_default_str();
   app.add_option("--load-depth-mm", loadDepth, "depth of the loaded band under the top edge [mm]")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

@@ -90,10 +90,11 @@ void crackProfile(DynamicScene& scene, const std::vector<double>& u) {
                   perRow[1][k] / Gc);
 }
 
-int energy(double eps, double ratio, double T, const char* csvPath) {
+int energy(double eps, double ratio, double T, double nu, const char* csvPath) {
   PlexiglassCrackSpec spec;
   spec.horizon = eps;
   spec.meshRatio = ratio;
+  spec.material.poissonRatio = nu;
   DynamicScene scene = makePlexiglassCrack(spec);
   const double Gc = scene.model->material().fractureEnergy();
   std::printf("eps = %g mm, h = %g mm: %zu points, %zu bonds\n", eps * 1e3, scene.h() * 1e3, scene.cloud.size(),
@@ -136,7 +137,7 @@ int energy(double eps, double ratio, double T, const char* csvPath) {
 int main(int argc, char** argv) {
   CLI::App app{"plexiglass_crack: the Plexiglass crack of 001 Sec. 6.1"};
   app.require_subcommand(1);
-  double eps = 0, ratio = 0, T = 0;
+  double eps = 0, ratio = 0, T = 0, nu = PlexiglassCrackSpec{}.material.poissonRatio;
   std::string csv;
   CLI::App* ratesCmd = app.add_subcommand("rates", "rate estimate 001:(106) from h = eps/2, eps/4, eps/8");
   ratesCmd->add_option("eps_mm", eps, "horizon eps [mm]")->required()->check(CLI::PositiveNumber);
@@ -147,11 +148,13 @@ int main(int argc, char** argv) {
   energyCmd->add_option("eps_over_h", ratio, "eps/h")->required()->check(CLI::PositiveNumber);
   energyCmd->add_option("T_us", T, "end time [us]")->required()->check(CLI::PositiveNumber);
   energyCmd->add_option("csv", csv, "write the table as CSV to this file");
+  energyCmd->add_option("--nu", nu, "Poisson ratio (0.25: tensile force only; other values add the hydrostatic force)")
+      ->capture_default_str();
   if (const auto code = bench::parseArguments(app, argc, argv)) return *code;
   const char* csvPath = csv.empty() ? nullptr : csv.c_str();
   try {
     if (ratesCmd->parsed()) return rates(eps * 1e-3, T * 1e-6, csvPath);
-    return energy(eps * 1e-3, ratio, T * 1e-6, csvPath);
+    return energy(eps * 1e-3, ratio, T * 1e-6, nu, csvPath);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
