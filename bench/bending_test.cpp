@@ -1,6 +1,6 @@
 // The pre-cracked beam under bending of 001 Sec. 6.2 (set-up: component/scenes/bending_test.hpp).
 //
-// How to run:  bending_test <cracks 1|2> <eps_mm> <eps/h> <dt_us> <T_us> [csv] [--load-depth-mm d]
+// How to run:  bending_test <cracks 1|2> <eps_mm> <eps/h> <dt_us> <T_us> [csv] [--load-depth-mm d] [--nu v]
 //   --load-depth-mm: depth of the loaded band under the top edge (default 0.75 = one horizon of 001;
 //   the resultant load is proportional to it, see scenes/bending_test.hpp).
 //   001 itself: bending_test 1 0.75 3 0.0035 350 (200k points, 1e5 steps: about 30 min on two threads).

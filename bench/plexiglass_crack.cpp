@@ -2,7 +2,7 @@
 //
 // How to run:
 //   plexiglass_crack rates  <eps_mm> <T_us> [csv]           rate estimate 001:(106), h = eps/2, eps/4, eps/8
-//   plexiglass_crack energy <eps_mm> <eps/h> <T_us> [csv]   energy bookkeeping and Griffith check
+//   plexiglass_crack energy <eps_mm> <eps/h> <T_us> [csv] [--nu v]   energy bookkeeping and Griffith check
 // What it shows: "rates" prints ||u1 - u2||, ||u2 - u3|| and the rate b every 2 us (001 Fig. 7);
 // "energy" prints kinetic, elastic and external work, their balance, the crack-zone energy P.E. and
 // G_c x crack length (001 Fig. 6), with wall time and peak memory, then the crack-zone energy per
