@@ -105,6 +105,9 @@ class Session {
     return fmu.fmi3SetInt64(instance, &vr, 1, &value, 1);
   }
   // Reads n elements of one Float64 variable; returns an empty vector when the call fails.
+  fmi3Status setUInt64(fmi3ValueReference vr, std::uint64_t value) {
+    return fmu.fmi3SetUInt64(instance, &vr, 1, &value, 1);
+  }
   std::vector<double> getFloat64(fmi3ValueReference vr, std::size_t n = 1) {
     std::vector<double> v(n);
     if (fmu.fmi3GetFloat64(instance, &vr, 1, v.data(), n) != fmi3OK) v.clear();
