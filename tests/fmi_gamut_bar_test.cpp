@@ -131,6 +131,13 @@ TEST_CASE("gamutBar: bad parameters and inputs are refused with one message", "[
     requireRefused(s, "fmi3SetFloat64", "loadFactor (vr 30) must be finite",
                    [&] { return s.setFloat64(PERISTEP_VR_LOAD_FACTOR, {std::numeric_limits<double>::quiet_NaN()}); });
   }
+  SECTION("a bar beyond the set-up limits (dense n x n tangent)") {
+    REQUIRE(s.setUInt64(PERISTEP_VR_GAMUT_BONDS, 20000) == fmi3OK);
+    s.log.clear();
+    CHECK(s.initialize(0, 10) == fmi3Error);
+    REQUIRE(s.log.errors() == 1);
+    CHECK_THAT(s.log.records.back().message, Catch::Matchers::Contains("use fewer gamutBonds"));
+  }
   SECTION("a load the bar cannot carry") {
     REQUIRE(s.initialize(0, 10) == fmi3OK);
     REQUIRE(s.setFloat64(PERISTEP_VR_LOAD_FACTOR, {5.0}) == fmi3OK);

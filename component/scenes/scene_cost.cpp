@@ -112,11 +112,11 @@ Part dynamicSetUp(const GridSpec& g) {
 
 // The 1D bar of 002: its per-point table of partners (weight and critical strain on three images of the
 // bar) and the solver's dense matrices (linear part, elastic and current tangent, single-precision factor),
-// with one dense Cholesky factorization at set-up.
+// with one dense Cholesky factorization at set-up; and the (zero) image outputs, ten arrays of nx * ny.
 Part gamutBar(const SceneParameters& p) {
   const double n = static_cast<double>(p.gamutBar.bonds), points = n + 1;
   Part m;
-  m.bytes = 48 * points * points + 28 * n * n;
+  m.bytes = 48 * points * points + 28 * n * n + 80 * static_cast<double>(p.grid.nx) * static_cast<double>(p.grid.ny);
   m.flops = n * n * n / 3 + 200 * points * points;
   m.what = "the dense tangent of " + numberText(n, 2) + " bonds";
   return m;
@@ -155,7 +155,7 @@ void checkSetUpLimits(const SceneParameters& p) {
   const CostEstimate e = estimateSetUp(p);
   const std::string change =
       p.scene == SceneId::GamutBar
-          ? std::string("use fewer gamutBonds")
+          ? std::string("use fewer gamutBonds (and nx = ny = 2: the bar has no image)")
           : "use a coarser grid (nx, ny), a smaller deltaOverH" +
                 std::string(p.scene == SceneId::GlassCeramic ? ", a smaller plate or fewer pcaRealizations" : "");
   if (l.memoryBytes > 0 && e.bytes > l.memoryBytes)
