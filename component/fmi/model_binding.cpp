@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "core/memory.hpp"
 #include "fmi/enumerations.hpp"
+#include "geometry/bar_grid.hpp"
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -68,8 +69,8 @@ GamutBarSpec gamutBar(const ParameterValues& v) {
   GamutBarSpec s;
   s.material = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_MATERIAL) == PERISTEP_GAMUT_MATERIAL_2 ? gamutMaterial2()
                                                                                               : gamutMaterial1();
-  // 002:(36) with the jitter of bench/gamut_bar's stochastic grid.
-  s.gridJitter = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_GRID) == PERISTEP_GAMUT_GRID_STOCHASTIC ? 0.65 : 0.0;
+  s.gridJitter = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_GRID) == PERISTEP_GAMUT_GRID_STOCHASTIC ? kStochasticGridJitter
+                                                                                                 : 0.0;  // 002:(36)
   const std::uint64_t bonds = v.scalar<std::uint64_t>(PERISTEP_VR_GAMUT_BONDS);
   s.bonds = static_cast<int>(std::min<std::uint64_t>(bonds, std::numeric_limits<int>::max()));
   s.scatter.denominator = v.scalar<double>(PERISTEP_VR_SCATTER_DENOMINATOR);
