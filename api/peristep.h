@@ -115,7 +115,19 @@ enum PeriStepValueReference {
   PERISTEP_VR_REACTION_BOTTOM_X = 104,
   PERISTEP_VR_REACTION_BOTTOM_Y = 105,
   PERISTEP_VR_REACTION_TOP_X = 106,
-  PERISTEP_VR_REACTION_TOP_Y = 107
+  PERISTEP_VR_REACTION_TOP_Y = 107,
+
+  /* the 1D deformation-gamut bar of paper 002 (PERISTEP_SCENE_GAMUT_BAR); seed picks the realization */
+  PERISTEP_VR_GAMUT_MATERIAL = 110,      /* Enumeration: enum PeriStepGamutMaterial */
+  PERISTEP_VR_GAMUT_GRID = 111,          /* Enumeration: enum PeriStepGamutGrid */
+  PERISTEP_VR_GAMUT_BONDS = 112,         /* UInt64: local bonds (bonds + 1 points) */
+  PERISTEP_VR_SCATTER_DENOMINATOR = 113, /* Float64: the /10 of 002:(26) */
+  PERISTEP_VR_WEIBULL_SHAPE = 114,       /* Float64: shape of the Weibull draw of 002:(26) */
+  PERISTEP_VR_GAMUT_PROTOCOL = 115,      /* Enumeration: enum PeriStepGamutProtocol */
+  PERISTEP_VR_BAR_STRESS = 120,          /* Float64, Pa: end force over area */
+  PERISTEP_VR_BAR_STRAIN = 121,          /* Float64: end displacement over length */
+  PERISTEP_VR_CYCLIC_EXPONENT = 122,     /* Float64: n' of the cyclic protocol (0 until it has finished) */
+  PERISTEP_VR_CYCLIC_COEFFICIENT = 123   /* Float64, Pa: K' of the cyclic protocol (0 until it has finished) */
 };
 
 /* Values of the enumeration PeriStep.Scene (variable "scene") */
@@ -128,7 +140,26 @@ enum PeriStepScene {
   PERISTEP_SCENE_BENDING_ONE_NOTCH = 6,    /* dynamic three-point bending, one pre-crack (Jha-Lipton, Sec. 6.2) */
   PERISTEP_SCENE_BENDING_TWO_NOTCHES = 7,  /* the same with two pre-cracks */
   PERISTEP_SCENE_KL_PLATE = 8,        /* plate with a Karhunen-Loeve random Young's modulus */
-  PERISTEP_SCENE_SPECIMEN = 9         /* the importer's specimen: material maps, pre-cracks, grips */
+  PERISTEP_SCENE_SPECIMEN = 9,        /* the importer's specimen: material maps, pre-cracks, grips */
+  PERISTEP_SCENE_GAMUT_BAR = 10       /* 1D stochastic deformation-gamut bar (Desai, paper 002) */
+};
+
+/* Values of the enumeration PeriStep.GamutMaterial (variable "gamutMaterial", gamutBar scene) */
+enum PeriStepGamutMaterial {
+  PERISTEP_GAMUT_MATERIAL_1 = 1, /* 002 Sec. 4.2, Material 1 */
+  PERISTEP_GAMUT_MATERIAL_2 = 2  /* 002 Sec. 4.2, Material 2 */
+};
+
+/* Values of the enumeration PeriStep.GamutGrid (variable "gamutGrid", gamutBar scene) */
+enum PeriStepGamutGrid {
+  PERISTEP_GAMUT_GRID_UNIFORM = 1,   /* equally spaced points */
+  PERISTEP_GAMUT_GRID_STOCHASTIC = 2 /* the stochastic grid of 002:(36) */
+};
+
+/* Values of the enumeration PeriStep.GamutProtocol (variable "gamutProtocol", gamutBar scene) */
+enum PeriStepGamutProtocol {
+  PERISTEP_GAMUT_MONOTONIC = 1, /* every step at end stress loadFactor * sigma_f */
+  PERISTEP_GAMUT_CYCLIC = 2     /* one force step of the cyclic protocol per fmi3DoStep; then n', K' */
 };
 
 /* Values of the enumeration PeriStep.MaterialField (variable "materialField", specimen scene) */

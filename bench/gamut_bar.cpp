@@ -22,6 +22,7 @@
 
 #include "bench_cli.hpp"
 #include "core/timer.hpp"
+#include "geometry/bar_grid.hpp"
 #include "gnuplot.hpp"
 #include "scenes/gamut_study.hpp"
 #include "solvers/gamut_bar_solver.hpp"
@@ -50,7 +51,7 @@ double loadAverage() {
 GamutBarSpec barSpec(int material, bool stochasticGrid, int bonds, std::uint64_t seed) {
   GamutBarSpec spec;
   spec.material = material == 1 ? gamutMaterial1() : gamutMaterial2();
-  spec.gridJitter = stochasticGrid ? 0.65 : 0.0;
+  spec.gridJitter = stochasticGrid ? kStochasticGridJitter : 0.0;
   spec.bonds = bonds;
   spec.seed = seed;
   return spec;

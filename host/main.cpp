@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   sampleCmd->add_option("--samples", sample.samples, "mc: number of samples; a list runs a study")->delimiter(',');
   sampleCmd->add_flag("--nested", sample.nested, "smolyak: nested 1D rules instead of Gauss rules");
-  sampleCmd->add_option("--seed", sample.seed, "mc: seed (or first microstructure seed)")->capture_default_str();
+  sampleCmd->add_option("--seed", sample.seed, "mc: seed (or the first seed of a scene without random coordinates: microstructure, bar realization)")->capture_default_str();
   sampleCmd->add_option("--fmu", sample.fmu, fmuHelp)->capture_default_str();
   sampleCmd->add_option("--out", sample.out, "HDF5 study file (default: <scene>_<rule>.h5); CSV beside it");
   sampleCmd->add_flag("-v,--verbose", sample.verbose, "echo every message the component logs");

@@ -105,6 +105,17 @@ class Session {
     return fmu.fmi3SetInt64(instance, &vr, 1, &value, 1);
   }
   // Reads n elements of one Float64 variable; returns an empty vector when the call fails.
+  fmi3Status setUInt64(fmi3ValueReference vr, std::uint64_t value) {
+    return fmu.fmi3SetUInt64(instance, &vr, 1, &value, 1);
+  }
+  // The bytes of a serialized FMU state; empty when a call fails.
+  std::vector<fmi3Byte> serialize(fmi3FMUState state) {
+    std::size_t size = 0;
+    if (fmu.fmi3SerializedFMUStateSize(instance, state, &size) != fmi3OK) return {};
+    std::vector<fmi3Byte> bytes(size);
+    if (fmu.fmi3SerializeFMUState(instance, state, bytes.data(), bytes.size()) != fmi3OK) return {};
+    return bytes;
+  }
   std::vector<double> getFloat64(fmi3ValueReference vr, std::size_t n = 1) {
     std::vector<double> v(n);
     if (fmu.fmi3GetFloat64(instance, &vr, 1, v.data(), n) != fmi3OK) v.clear();

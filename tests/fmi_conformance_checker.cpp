@@ -126,6 +126,10 @@ const std::set<std::string> kDimensionless{
     "brokenBonds",          // a count
     "forceEvaluations",     // a count
     "integratorTolerance",  // relative tolerance
+    "scatterDenominator",   // 002:(26): divides a relative perturbation
+    "weibullShape",         // shape of a Weibull law
+    "barStrain",            // a strain
+    "cyclicExponent",       // n', the exponent of a power law
 };
 
 class Checker {

@@ -41,10 +41,8 @@ void prepare(Session& s) {
 }
 
 std::vector<fmi3Byte> serialize(Session& s, fmi3FMUState state) {
-  std::size_t size = 0;
-  REQUIRE(s.fmu.fmi3SerializedFMUStateSize(s.instance, state, &size) == fmi3OK);
-  std::vector<fmi3Byte> bytes(size);
-  REQUIRE(s.fmu.fmi3SerializeFMUState(s.instance, state, bytes.data(), bytes.size()) == fmi3OK);
+  std::vector<fmi3Byte> bytes = s.serialize(state);
+  REQUIRE(!bytes.empty());
   return bytes;
 }
 

@@ -114,6 +114,7 @@ TEST_CASE("every output lists the inputs it depends on in every scene", "[modelD
       {"bendingOneNotch", PERISTEP_SCENE_BENDING_ONE_NOTCH, 2e-6, PERISTEP_VR_LOAD_FACTOR},
       {"bendingTwoNotches", PERISTEP_SCENE_BENDING_TWO_NOTCHES, 2e-6, PERISTEP_VR_LOAD_FACTOR},
       {"specimen", PERISTEP_SCENE_SPECIMEN, 0.25, PERISTEP_VR_LOAD_FACTOR},
+      {"gamutBar", PERISTEP_SCENE_GAMUT_BAR, 0.25, PERISTEP_VR_LOAD_FACTOR},
   };
   for (const Scene& scene : scenes) {
     const auto base = run(scene, kBase, all);

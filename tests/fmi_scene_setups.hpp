@@ -2,7 +2,8 @@
 // Each built-in scene set up on a coarse grid through the C ABI (Configuration Mode and parameters, not
 // yet initialized), for tests that run every scene: the point grids of the quasi-static scenes at 9 x 9
 // (glass-ceramic: the paper's plate at h = 16 um), 001's Plexiglass square at eps = 8 mm, h = eps/2, and
-// 001's beam at h = 3.125 mm. internalTimeStep stays 0: the dynamic scenes take 001's steps.
+// 001's beam at h = 3.125 mm. internalTimeStep stays 0: the dynamic scenes take 001's steps. The 1D bar of
+// 002 (no image outputs: 2 x 2) with 16 bonds, pulled monotonically by loadFactor.
 #include <catch2/catch.hpp>
 
 #include "fmi_abi_support.hpp"
@@ -32,6 +33,10 @@ inline void setUpCoarseScene(Session& s, std::int64_t scene) {
       grid(25, 25, 1);
       domain(0.1, 0.1, 0.25);
       REQUIRE(s.setFloat64(PERISTEP_VR_DELTA_OVER_H, {2.0}) == fmi3OK);
+      return;
+    case PERISTEP_SCENE_GAMUT_BAR:
+      grid(2, 2, 1);
+      REQUIRE(s.setUInt64(PERISTEP_VR_GAMUT_BONDS, 16) == fmi3OK);
       return;
     case PERISTEP_SCENE_BENDING_ONE_NOTCH:
     case PERISTEP_SCENE_BENDING_TWO_NOTCHES:

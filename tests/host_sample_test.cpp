@@ -4,8 +4,10 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <thread>
@@ -253,5 +255,59 @@ TEST_CASE("peristep sample: a sample the component refuses is recorded and the s
     CHECK_THAT(r.out, Contains(std::to_string(12 - ok) + " of 12 samples failed; the moments are over the " +
                                std::to_string(ok) + " successful samples"));
     CHECK(mean.values.at(0) == Approx(sum / static_cast<double>(ok)).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("peristep sample: Monte Carlo over realizations of the 002 bar stores the n', K' statistics",
+          "[host][sample][gamut]") {
+  // scenes/gamut_bar.toml at 16 bonds: the cyclic protocol on realizations 0, 1, 2 (--seed 0: seed 0 + k).
+  TempDir dir;
+  writeText(dir / "bar.toml", sceneText("gamut_bar.toml", {{"gamutBonds", "16"}}));
+  const ProcessResult r =
+      sample(dir.path(), {"bar.toml", "--rule", "mc", "--samples", "3", "--seed", "0", "--out", "bar.h5"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exitCode == 0);
+
+  const hid_t f = openHdf5(dir / "bar.h5");
+  REQUIRE(f >= 0);
+  const Dataset seeds = readDataset(f, "/level_3/seeds");
+  std::map<std::string, double> mean;
+  std::map<std::string, std::vector<double>> samples;
+  for (const std::string name : {"cyclicExponent", "cyclicCoefficient"}) {
+    samples[name] = readDataset(f, "/level_3/samples/" + name).values;
+    mean[name] = readDataset(f, "/level_3/mean/" + name).values.at(0);
+  }
+  H5Fclose(f);
+  CHECK(seeds.values == std::vector<double>{0, 1, 2});
+
+  // The CSV's row: mean, std and the standard errors of every scalar output, here n' and K'.
+  std::istringstream csv(readText(dir / "bar.csv"));
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::istringstream s(line);
+    for (std::string c; std::getline(s, c, ',');) out.push_back(c);
+    return out;
+  };
+  const std::vector<std::string> names = cells(header), values = cells(row);
+  REQUIRE(names.size() == values.size());
+  const auto column = [&](const std::string& name) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    REQUIRE(it != names.end());
+    return std::stod(values[static_cast<std::size_t>(it - names.begin())]);
+  };
+  for (const std::string name : {"cyclicExponent", "cyclicCoefficient"}) {
+    INFO(name);
+    const std::vector<double>& v = samples[name];
+    REQUIRE(v.size() == 3);
+    for (double x : v) CHECK(x > 0);  // every sample finished the protocol
+    const double average = (v[0] + v[1] + v[2]) / 3;
+    CHECK(mean[name] == Approx(average).epsilon(1e-14));
+    CHECK(column("mean_" + name) == Approx(average).epsilon(1e-9));  // printed with 10 digits
+    CHECK(column("std_" + name) > 0);
+    CHECK(column("seMean_" + name) > 0);
+    CHECK(column("seStd_" + name) > 0);
   }
 }

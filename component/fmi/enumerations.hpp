@@ -28,7 +28,7 @@ struct EnumerationValue {
   Kind kind;
 };
 
-inline constexpr std::array<EnumerationValue<SceneId>, 9> kSceneValues{{
+inline constexpr std::array<EnumerationValue<SceneId>, 10> kSceneValues{{
     {PERISTEP_SCENE_SMOOTH, SceneId::Smooth},
     {PERISTEP_SCENE_COMPOSITE, SceneId::Composite},
     {PERISTEP_SCENE_INTERFACE_CRACK, SceneId::InterfaceCrack},
@@ -38,10 +38,11 @@ inline constexpr std::array<EnumerationValue<SceneId>, 9> kSceneValues{{
     {PERISTEP_SCENE_BENDING_TWO_NOTCHES, SceneId::BendingTwoNotches},
     {PERISTEP_SCENE_KL_PLATE, SceneId::KlPlate},
     {PERISTEP_SCENE_SPECIMEN, SceneId::Specimen},
+    {PERISTEP_SCENE_GAMUT_BAR, SceneId::GamutBar},
 }};
 
 // The scenes' names and descriptions: FMI's own (they give the DefaultExperiment and step sizes that fit).
-inline constexpr std::array<Option<SceneId>, 9> kSceneOptions{{
+inline constexpr std::array<Option<SceneId>, 10> kSceneOptions{{
     {SceneId::Smooth, "smooth",
      "Smooth manufactured solution, one random coordinate (Fan et al., Test 1); quasi-static: the "
      "DefaultExperiment fits"},
@@ -72,6 +73,12 @@ inline constexpr std::array<Option<SceneId>, 9> kSceneOptions{{
      "materialPoissonRatio, materialFractureEnergy, pre-cracks crackX0..crackY1, grips gripLeft..gripTop "
      "moved by loadFactor; quasi-static brittle fracture (000 Sec. 3.3), every step breaks bonds until "
      "equilibrium at its load"},
+    {SceneId::GamutBar, "gamutBar",
+     "1D stochastic deformation-gamut bar (Desai, paper 002 Sec. 4): realization seed of gamutBonds bonds, "
+     "gamutMaterial, gamutGrid, scatter of 002:(26); fixed at x = 0, pulled at x = L. gamutProtocol "
+     "monotonic: every step moves the end stress to loadFactor * sigma_f; cyclic: every step of any size "
+     "takes the next of the protocol's 53 force steps, and cyclicExponent, cyclicCoefficient hold n', K' "
+     "after the 53rd; quasi-static, no image outputs"},
 }};
 
 inline constexpr std::array<EnumerationValue<LinearSolverKind>, 4> kLinearSolverValues{{

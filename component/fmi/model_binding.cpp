@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 #include "core/errors.hpp"
 #include "core/memory.hpp"
 #include "fmi/enumerations.hpp"
+#include "geometry/bar_grid.hpp"
 #include "peristep.h"
 
 namespace peristep::fmi {
@@ -62,7 +64,21 @@ SpecimenSpec specimen(const ParameterValues& v) {
   return s;
 }
 
-const std::array<ComputedVariable, 32> kComputed{{
+// The bar of 002 (scene gamutBar): the enumerations' values are checked when they are set.
+GamutBarSpec gamutBar(const ParameterValues& v) {
+  GamutBarSpec s;
+  s.material = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_MATERIAL) == PERISTEP_GAMUT_MATERIAL_2 ? gamutMaterial2()
+                                                                                              : gamutMaterial1();
+  s.gridJitter = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_GRID) == PERISTEP_GAMUT_GRID_STOCHASTIC ? kStochasticGridJitter
+                                                                                                 : 0.0;  // 002:(36)
+  const std::uint64_t bonds = v.scalar<std::uint64_t>(PERISTEP_VR_GAMUT_BONDS);
+  s.bonds = static_cast<int>(std::min<std::uint64_t>(bonds, std::numeric_limits<int>::max()));
+  s.scatter.denominator = v.scalar<double>(PERISTEP_VR_SCATTER_DENOMINATOR);
+  s.scatter.weibullShape = v.scalar<double>(PERISTEP_VR_WEIBULL_SHAPE);
+  return s;
+}
+
+const std::array<ComputedVariable, 36> kComputed{{
     {PERISTEP_VR_XI_DISTRIBUTION, Needs::Parameters, nullptr,
      [](P p, M, std::span<std::int32_t> out) {
        const SceneParameters s = sceneParameters(p);
@@ -105,6 +121,12 @@ const std::array<ComputedVariable, 32> kComputed{{
     {PERISTEP_VR_REACTION_BOTTOM_Y, Needs::Solution, gripReaction<Side::Bottom, 1>},
     {PERISTEP_VR_REACTION_TOP_X, Needs::Solution, gripReaction<Side::Top, 0>},
     {PERISTEP_VR_REACTION_TOP_Y, Needs::Solution, gripReaction<Side::Top, 1>},
+    {PERISTEP_VR_BAR_STRESS, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->barStress(); }},
+    {PERISTEP_VR_BAR_STRAIN, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->barStrain(); }},
+    {PERISTEP_VR_CYCLIC_EXPONENT, Needs::Solution,
+     [](P, M m, std::span<double> out) { out[0] = m->cyclicExponent(); }},
+    {PERISTEP_VR_CYCLIC_COEFFICIENT, Needs::Solution,
+     [](P, M m, std::span<double> out) { out[0] = m->cyclicCoefficient(); }},
 }};
 
 }  // namespace
@@ -142,6 +164,10 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.criticalEnergyReleaseRate = v.scalar<double>(PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE);
   p.density = v.scalar<double>(PERISTEP_VR_DENSITY);
   if (p.scene == SceneId::Specimen) p.specimen = specimen(v);
+  if (p.scene == SceneId::GamutBar) {
+    p.gamutBar = gamutBar(v);
+    p.gamutCyclic = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_PROTOCOL) == PERISTEP_GAMUT_CYCLIC;
+  }
   // memoryBudget 0: 3/4 of what the process can use, leaving room for the importer and other instances.
   const auto budget = v.scalar<std::uint64_t>(PERISTEP_VR_MEMORY_BUDGET);
   p.limits.memoryBytes = budget > 0 ? static_cast<double>(budget) : 0.75 * static_cast<double>(usableMemoryBytes());

@@ -9,6 +9,9 @@
 
 namespace peristep {
 
+// The jitter of 002's stochastic grid.
+inline constexpr double kStochasticGridJitter = 0.65;
+
 // bonds + 1 increasing positions from 0 to length; jitter = 0 gives the uniform grid (stream unused).
 std::vector<double> barGrid(double length, int bonds, double jitter, ScatterStream& stream);
 

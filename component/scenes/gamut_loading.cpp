@@ -39,22 +39,33 @@ CyclicProtocol gamutCyclicProtocol(const RambergOsgood& material, int amplitudes
   return protocol;
 }
 
-CyclicLoops cyclicLoading(GamutBarSolver& solver, const CyclicProtocol& protocol, double area) {
-  CyclicLoops loops;
-  const GamutBarOutput first = solver.step(0.01);
-  loops.modulus = first.stress / first.strain;
+std::vector<double> cyclicForces(const CyclicProtocol& protocol, double area) {
+  std::vector<double> forces{0.01};
+  // Each ramp starts where the last one ended: the force the solver holds after its last step.
   auto rampTo = [&](double force) {
-    const double from = solver.force();
-    GamutBarOutput out;
+    const double from = forces.back();
     for (int s = 1; s <= protocol.stepsPerHalfCycle; ++s)
-      out = solver.step(from + (force - from) * s / protocol.stepsPerHalfCycle);
-    return out.strain;
+      forces.push_back(from + (force - from) * s / protocol.stepsPerHalfCycle);
   };
-  double peak = 0;
   for (double amplitude : protocol.amplitudes) {
-    const double force = amplitude * area;
-    peak = rampTo(force);
-    const double valley = rampTo(-force);
+    rampTo(amplitude * area);
+    rampTo(-amplitude * area);
+  }
+  rampTo(protocol.amplitudes.back() * area);  // back to +F_a once more: does the last loop close?
+  return forces;
+}
+
+CyclicLoops cyclicLoops(const CyclicProtocol& protocol, double area, std::span<const double> strains) {
+  const std::size_t perHalf = static_cast<std::size_t>(protocol.stepsPerHalfCycle);
+  const std::size_t levels = protocol.amplitudes.size();
+  require(strains.size() == 1 + (2 * levels + 1) * perHalf, "cyclic loops: one strain per step of the protocol");
+  CyclicLoops loops;
+  loops.modulus = 0.01 / area / strains[0];
+  double peak = 0;
+  for (std::size_t a = 0; a < levels; ++a) {
+    const double amplitude = protocol.amplitudes[a];
+    peak = strains[(2 * a + 1) * perHalf];
+    const double valley = strains[(2 * a + 2) * perHalf];
     // Masing loops close: the half cycle back to +F_a would end at `peak` again (checked below at the
     // largest amplitude), so the loop is -F_a .. +F_a with the strains of these two visits.
     const double strainAmplitude = 0.5 * (peak - valley);
@@ -62,8 +73,14 @@ CyclicLoops cyclicLoading(GamutBarSolver& solver, const CyclicProtocol& protocol
     loops.strainAmplitude.push_back(strainAmplitude);
     loops.plasticStrainAmplitude.push_back(strainAmplitude - amplitude / loops.modulus);
   }
-  loops.closure = std::abs(rampTo(protocol.amplitudes.back() * area) - peak);
+  loops.closure = std::abs(strains.back() - peak);
   return loops;
+}
+
+CyclicLoops cyclicLoading(GamutBarSolver& solver, const CyclicProtocol& protocol, double area) {
+  std::vector<double> strains;
+  for (double force : cyclicForces(protocol, area)) strains.push_back(solver.step(force).strain);
+  return cyclicLoops(protocol, area, strains);
 }
 
 }  // namespace peristep

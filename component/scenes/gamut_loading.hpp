@@ -1,6 +1,7 @@
 #pragma once
 // The loading programmes of 002 Sec. 4.1 for a GamutBarSolver.
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,11 @@ struct CyclicLoops {
 };
 // Plastic strain amplitude eps_pa = eps_a - sigma_a / E_bar, with eps_a half the strain range of the loop.
 CyclicLoops cyclicLoading(GamutBarSolver& solver, const CyclicProtocol& protocol, double area);
+
+// cyclicLoading in two halves, for a caller that takes the steps one at a time (the FMU's gamutBar scene):
+// the end force [N] of every solver step in order (first the 0.01 N step that measures the modulus), and
+// the loops from the strains those steps reached. The forces are the doubles cyclicLoading steps to.
+std::vector<double> cyclicForces(const CyclicProtocol& protocol, double area);
+CyclicLoops cyclicLoops(const CyclicProtocol& protocol, double area, std::span<const double> strains);
 
 }  // namespace peristep

@@ -110,12 +110,26 @@ Part dynamicSetUp(const GridSpec& g) {
   return m;
 }
 
+// The 1D bar of 002: its per-point table of partners (weight and critical strain on three images of the
+// bar) and the solver's dense matrices (linear part, elastic and current tangent, single-precision factor),
+// with one dense Cholesky factorization at set-up; and the (zero) image outputs, ten arrays of nx * ny.
+Part gamutBar(const SceneParameters& p) {
+  const double n = static_cast<double>(p.gamutBar.bonds), points = n + 1;
+  Part m;
+  m.bytes = 48 * points * points + 28 * n * n + 80 * static_cast<double>(p.grid.nx) * static_cast<double>(p.grid.ny);
+  m.flops = n * n * n / 3 + 200 * points * points;
+  m.what = "the dense tangent of " + numberText(n, 2) + " bonds";
+  return m;
+}
+
 }  // namespace
 
 CostEstimate estimateSetUp(const SceneParameters& p) {
   std::vector<Part> parts;
   if (isDynamic(p.scene)) {
     parts.push_back(dynamicSetUp(p.grid));
+  } else if (p.scene == SceneId::GamutBar) {
+    parts.push_back(gamutBar(p));
   } else {
     parts.push_back(lpsSetUp(p.grid));
     if (p.scene == SceneId::GlassCeramic)
@@ -139,9 +153,11 @@ void checkSetUpLimits(const SceneParameters& p) {
   const WorkLimits& l = p.limits;
   if (l.memoryBytes <= 0 && l.setUpSeconds <= 0) return;
   const CostEstimate e = estimateSetUp(p);
-  const std::string change = "use a coarser grid (nx, ny), a smaller deltaOverH" +
-                             std::string(p.scene == SceneId::GlassCeramic ? ", a smaller plate or fewer pcaRealizations"
-                                                                          : "");
+  const std::string change =
+      p.scene == SceneId::GamutBar
+          ? std::string("use fewer gamutBonds (and nx = ny = 2: the bar has no image)")
+          : "use a coarser grid (nx, ny), a smaller deltaOverH" +
+                std::string(p.scene == SceneId::GlassCeramic ? ", a smaller plate or fewer pcaRealizations" : "");
   if (l.memoryBytes > 0 && e.bytes > l.memoryBytes)
     throw InvalidInput("the scene set-up would need about " + numberText(e.bytes, 2) + " bytes of memory (mostly " +
                        e.mostMemory + ") but memoryBudget = " + numberText(l.memoryBytes, 2) + " bytes; " + change +

@@ -22,7 +22,8 @@ std::size_t randomCoordinates(const SceneParameters& p) {
     case SceneId::Specimen: return p.specimen.randomField ? p.xi.size() : 0;
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
-    case SceneId::BendingTwoNotches: return 0;
+    case SceneId::BendingTwoNotches:
+    case SceneId::GamutBar: return 0;  // the bar's realization comes from seed
   }
   return 0;
 }
@@ -46,13 +47,13 @@ double xiScale(SceneId scene, std::size_t) { return scene == SceneId::Smooth ? 0
 void validate(const SceneParameters& p) {
   require(p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack ||
               p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || p.scene == SceneId::Specimen ||
-              isDynamic(p.scene),
+              p.scene == SceneId::GamutBar || isDynamic(p.scene),
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p.scene))
     validateDynamicScene(p);  // cell-centred lattices: h = Lx/nx, not Lx/(nx-1)
   else if (p.scene == SceneId::Specimen)
     validate(p.specimen, p.grid);
-  else
+  else if (p.scene != SceneId::GamutBar)  // the bar is not on the plate grid (GamutBar checks its spec)
     validate(p.grid);
   validateElastic(1.0, p.poissonRatio);
   require(std::isfinite(p.modulusContrast) && p.modulusContrast > 0,
@@ -109,6 +110,7 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
     case SceneId::GlassCeramic: return makeGlassCeramicRunner(p);
     case SceneId::KlPlate: return makeKlPlateRunner(p);
     case SceneId::Specimen: return makeSpecimenRunner(p);
+    case SceneId::GamutBar: return makeGamutBarRunner(p);
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches: return makeDynamicRunner(p);
@@ -187,6 +189,10 @@ double SceneModel::strainEnergy() const { return impl_->runner->strainEnergy(); 
 double SceneModel::kineticEnergy() const { return impl_->runner->kineticEnergy(); }
 double SceneModel::externalWork() const { return impl_->runner->externalWork(); }
 double SceneModel::forceEvaluations() const { return impl_->runner->forceEvaluations(); }
+double SceneModel::barStress() const { return impl_->runner->barStress(); }
+double SceneModel::barStrain() const { return impl_->runner->barStrain(); }
+double SceneModel::cyclicExponent() const { return impl_->runner->cyclicExponent(); }
+double SceneModel::cyclicCoefficient() const { return impl_->runner->cyclicCoefficient(); }
 
 std::vector<std::uint8_t> SceneModel::saveState() const {
   ByteWriter w;

@@ -11,6 +11,7 @@
 
 #include "core/progress.hpp"
 #include "geometry/point_cloud.hpp"
+#include "models/gamut_bar.hpp"
 #include "random/kl_options.hpp"
 #include "scenes/specimen.hpp"
 #include "solvers/linear_solver_kind.hpp"
@@ -28,6 +29,7 @@ enum class SceneId : std::int64_t {
   BendingTwoNotches = 7,  // 001 Sec. 6.2: the same with two pre-cracks
   KlPlate = 8,         // plate whose Young's modulus is a Karhunen-Loeve random field (000 Sec. 2.2)
   Specimen = 9,        // the importer's plate: material maps, pre-cracks, grips (scenes/specimen.hpp)
+  GamutBar = 10,       // 002: one realization of the 1D stochastic deformation-gamut bar (models/gamut_bar.hpp)
 };
 
 // Law of a standardized coordinate; Unused: the scene ignores that entry of xi.
@@ -69,6 +71,11 @@ struct SceneParameters {
   double criticalEnergyReleaseRate = 500;  // dynamic scenes: G_c [J/m^2]
   double density = 1200;                   // dynamic scenes: rho [kg/m^3]
   SpecimenSpec specimen;                   // Specimen: material maps, pre-cracks, grips
+  // GamutBar: material, grid, bonds and scatter of the bar (bar.seed is the study seed; grid.seed picks
+  // the realization), and the protocol: monotonic (every step at loadFactor sigma_f) or cyclic (the
+  // protocol of scenes/gamut_loading.hpp, one force step per fmi3DoStep).
+  GamutBarSpec gamutBar;
+  bool gamutCyclic = false;
   WorkLimits limits;
   ProgressHook progress;            // optional: told how far long set-ups and steps have come
 };
@@ -151,6 +158,12 @@ class SceneModel {
   double kineticEnergy() const;
   double externalWork() const;
   double forceEvaluations() const;
+  // GamutBar (0 otherwise): end stress F / A [Pa] and strain u(L) / L of the last step; n' and K' [Pa] of
+  // the cyclic protocol once its last step is done (0 before, and in monotonic loading).
+  double barStress() const;
+  double barStrain() const;
+  double cyclicExponent() const;
+  double cyclicCoefficient() const;
 
   // Checkpoint of everything that changes after set-up (load, solution, bond state).
   std::vector<std::uint8_t> saveState() const;

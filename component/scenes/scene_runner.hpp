@@ -39,6 +39,11 @@ class Runner {
   virtual double kineticEnergy() const { return 0.0; }
   virtual double externalWork() const { return 0.0; }
   virtual double forceEvaluations() const { return 0.0; }
+  // The 1D bar of 002 (GamutBar): end stress [Pa], strain, cyclic n' and K' [Pa].
+  virtual double barStress() const { return 0.0; }
+  virtual double barStrain() const { return 0.0; }
+  virtual double cyclicExponent() const { return 0.0; }
+  virtual double cyclicCoefficient() const { return 0.0; }
   virtual std::vector<std::uint8_t> saveState() const = 0;
   virtual void restoreState(std::span<const std::uint8_t> bytes) = 0;
 };
@@ -50,6 +55,7 @@ std::unique_ptr<Runner> makeGlassCeramicRunner(const SceneParameters& p);    // 
 std::unique_ptr<Runner> makeKlPlateRunner(const SceneParameters& p);         // KL random modulus
 std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (scenes 5-7)
 std::unique_ptr<Runner> makeSpecimenRunner(const SceneParameters& p);        // the importer's specimen
+std::unique_ptr<Runner> makeGamutBarRunner(const SceneParameters& p);        // 002's 1D bar
 // The dynamic scenes' own checks (cell-centred lattice, integrator options); throws InvalidInput.
 void validateDynamicScene(const SceneParameters& p);
 

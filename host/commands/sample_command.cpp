@@ -32,7 +32,7 @@ SampleRule parseRule(const std::string& name) {
 }
 
 std::string lawText(const RandomSpace& space) {
-  if (space.laws.empty()) return "none (Monte Carlo varies the seed: one microstructure per sample)";
+  if (space.laws.empty()) return "none (Monte Carlo varies the seed: one realization per sample, e.g. a microstructure)";
   std::string s;
   for (std::size_t d = 0; d < space.laws.size(); ++d)
     s += (d ? ", " : "") + std::string("xi[") + std::to_string(space.index[d]) +
