@@ -23,9 +23,13 @@ class DamagedLpsOperator {
   // Largest stretches to start from: +infinity (broken for every s0) on the bonds that cross the segment
   // (ax, ay)-(bx, by), a pre-existing slit; -infinity elsewhere.
   std::vector<double> slit(double ax, double ay, double bx, double by) const;
+  // Damage 003:(46) at every point: 1 - (sum of gamma over its bonds inside the lattice) / (their number).
+  std::vector<double> damage(const std::vector<double>& maxStretch, double s0) const;
   const CoarseGrid& grid() const { return grid_; }
 
  private:
+  std::vector<double> bondStates(const std::vector<double>& maxStretch, double s0) const;  // 003:(28)
+
   CoarseGrid grid_;
   LatticeStencil stencil_;
   double lambda_, mu_, eta_;

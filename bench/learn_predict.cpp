@@ -1,0 +1,164 @@
+// Prediction step of 003 (Sec. 5.2-5.4): the learned LPS model (kernel and moduli fitted here on the static
+// sets, delta = 20 A, P = 4, the choice of learn_lps) runs the coarse-grained fracture samples forward from
+// frame 0 and is compared with the MD frames: relative displacement and damage errors over 40 frames.
+//   learn_predict [--data data/learning/graphene_md.h5] [--s0 0.11] [--substeps 8] [--layer 1]
+//                 [--scan 0.05,0.08,0.11,0.15,0.2]
+// Samples: III (training, h = 5 A; vertical edges prescribed), IV (test, h = 5 A; free edges, body force),
+// III on h = 3.17 A with delta = 4 h and s0 sqrt(5/3.17) (003 Sec. 5.4).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "bench_cli.hpp"
+#include "learning/data_sets.hpp"
+#include "learning/fracture_prediction.hpp"
+#include "learning/kernel_fit.hpp"
+
+using namespace peristep::learning;
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+struct Sample {
+  const char* name;
+  const char* set;
+  double deltaPerH;     // 0: the learned delta
+  bool edgesDriven;     // III: the vertical edges follow the frames
+  double s0Scale;       // s0 ~ 1/sqrt(delta), 003 Sec. 5.4
+  const char* paper;    // 003's displacement / damage errors
+};
+
+struct Outcome {
+  PredictionError error;
+  double netForce = 0, rmsForce = 0, rmsInertia = 0;  // frame 1 of the data: see balance()
+  double wall = 0, s0 = 0;
+  std::size_t prescribed = 0, points = 0;
+  bool finite = true;
+};
+
+// How far the data are from the model's equation at frame 1 (before damage grows), over the free points:
+// the mean of L_KN[u] (a net force: the corrected operator 003:(30) does not conserve momentum, so its mean
+// need not vanish), its rms and the rms of rho u'' from the frames (003:(21)).
+void balance(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& s, Outcome& out) {
+  std::vector<double> smax = s.initialStretch;
+  op.updateMaxStretch(data.u[0], smax);
+  op.updateMaxStretch(data.u[1], smax);
+  const std::vector<double> L = op.apply(data.u[1], smax, s.s0);
+  const double dt2 = data.interval * data.interval;
+  double mean[2] = {0, 0}, ll = 0, aa = 0, n = 0;
+  for (std::size_t p = 0; p < data.rho.size(); ++p) {
+    if (s.prescribed[p]) continue;
+    n += 1;
+    for (std::size_t c = 0; c < 2; ++c) {
+      const std::size_t i = 2 * p + c;
+      const double a = data.rho[p] * (data.u[2][i] - 2 * data.u[1][i] + data.u[0][i]) / dt2;
+      mean[c] += L[i], ll += L[i] * L[i], aa += a * a;
+    }
+  }
+  out.netForce = std::hypot(mean[0], mean[1]) / n, out.rmsForce = std::sqrt(ll / n), out.rmsInertia = std::sqrt(aa / n);
+}
+
+constexpr double kHalfSide = 50.0;  // the MD sheet is [-50, 50]^2 A, slit at x1 = 0 from x2 = -50 to -25
+
+Outcome predict(const CoarseDataSet& set, const Sample& smp, const KernelFit& fit, double delta0, double s0,
+                std::size_t substeps, double layer) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const FractureFrames data = fractureFrames(set);
+  const double delta = smp.deltaPerH > 0 ? smp.deltaPerH * set.grid.hx : delta0;
+  const BernsteinKernel kernel{delta, fit.kernel.alpha, fit.kernel.D};  // K/m only: the scale does not matter
+  const DamagedLpsOperator op(set.grid, makeLatticeStencil(set.grid.hx, set.grid.hy, delta), kernel, fit.lambda,
+                              fit.mu);
+  PredictionSetup s;
+  s.s0 = s0 * smp.s0Scale;
+  s.substeps = substeps;
+  // The slit just right of x1 = 0: on the fine grid a lattice column lies on x1 = 0.
+  s.initialStretch = op.slit(1e-6, -kHalfSide - 10, 1e-6, -25);
+  for (std::size_t p = 0; p < set.grid.size(); ++p)
+    s.prescribed.push_back(smp.edgesDriven && std::abs(set.grid.x(p)) > kHalfSide - layer * delta);
+  Outcome out;
+  out.s0 = s.s0;
+  out.points = set.grid.size();
+  for (const char c : s.prescribed) out.prescribed += c ? 1 : 0;
+  balance(op, data, s, out);
+  const FractureRun run = predictFracture(op, data, s);
+  out.finite = run.finite;
+  if (run.finite) out.error = predictionError(op, data, run, s);
+  out.wall = seconds(t0);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Predict the MD fracture samples with the learned LPS model of 003 and print the errors"};
+  std::string path = "data/learning/graphene_md.h5";
+  double delta = 20, s0 = 0.11, layer = 1.0;
+  int order = 4;
+  std::size_t substeps = 8;
+  std::vector<double> scan;
+  app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
+  app.add_option("--delta", delta, "horizon of the learned kernel [A] (learn_lps's choice: 20)");
+  app.add_option("--order", order, "Bernstein order P (learn_lps's choice: 4)");
+  app.add_option("--s0", s0, "critical stretch at h = 5 A (003: 0.11)");
+  app.add_option("--substeps", substeps, "explicit steps per MD frame interval");
+  app.add_option("--layer", layer, "width of the prescribed edge layers of sample III, in delta");
+  app.add_option("--scan", scan, "also: errors on sample III for these s0")->delimiter(',');
+  if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
+  try {
+    const auto t0 = std::chrono::steady_clock::now();
+    const CoarseDataFile file = readCoarseData(path);
+    const StaticData train = staticData(file.sets.at("train"));
+    StaticResidual res(train.lattice, makeLatticeStencil(train.lattice.hx, train.lattice.hy, delta), order,
+                       train.samples, train.weight);
+    const KernelFit fit = fitKernel(res);
+    std::printf("kernel fit (static training set, delta = %.1f A, P = %d): alpha = %.4f, lambda = %.4f TPa, "
+                "mu = %.4f TPa, relative residual %.4f, %.1f s\n  D =",
+                delta, order, fit.kernel.alpha, fit.lambda * kTPaPerEvA3, fit.mu * kTPaPerEvA3, fit.relativeResidual,
+                seconds(t0));
+    for (const double d : fit.kernel.D) std::printf(" %.5e", d);
+    const double interval = file.sets.at("fracture_train").frameInterval;
+    std::printf("\nframe interval %.3e s, %zu steps per frame: dt = %.3e s; s0 = %.4f (at h = 5 A), eta = 0.05, "
+                "edge layers of III %.2f delta\n\n",
+                interval, substeps, interval / static_cast<double>(substeps), s0, layer);
+    const Sample samples[] = {
+        {"III training, h = 5 A", "fracture_train", 0, true, 1.0, "27 / 9"},
+        {"IV test, h = 5 A", "fracture_test", 0, false, 1.0, "58 / 15"},
+        {"III training, h = 3.17 A", "fracture_train_fine", 4, true, std::sqrt(5.0 / 3.17), "19 / 30"},
+    };
+    std::printf("u, phi err: sqrt(sum_f |pred - MD|^2 / sum_f |MD|^2), frames 1-40; mean: of the per-frame ratios; "
+                "u shift: u err without the mean of pred - MD per frame;\nframe 1 [eV/A^4]: |mean L_KN[u]|, rms "
+                "L_KN[u], rms rho u'' of the MD frames over the free points\n");
+    std::printf("%-26s %7s %11s %7s %7s %7s %7s %7s %9s %8s %8s %8s %7s\n", "sample", "s0", "prescribed", "u err%",
+                "phi%", "u mean%", "phi mn%", "u shift", "003 u/phi", "mean L", "rms L", "rms rho a", "wall s");
+    const auto row = [](const char* name, const Outcome& o, const char* paper) {
+      if (!o.finite) {
+        std::printf("%-26s %7.4f %5zu/%-5zu  unstable (non-finite displacement)\n", name, o.s0, o.prescribed, o.points);
+        return;
+      }
+      std::printf("%-26s %7.4f %5zu/%-5zu %7.1f %7.1f %7.1f %7.1f %7.1f %9s %8.1e %8.1e %8.1e %7.2f\n", name, o.s0,
+                  o.prescribed, o.points, 100 * o.error.displacement, 100 * o.error.damage, 100 * o.error.displacementMean,
+                  100 * o.error.damageMean, 100 * o.error.displacementShifted, paper, o.netForce, o.rmsForce,
+                  o.rmsInertia, o.wall);
+      std::fflush(stdout);
+    };
+    for (const Sample& smp : samples)
+      row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, s0, substeps, layer), smp.paper);
+    if (!scan.empty()) {
+      std::printf("\ns0 scan on sample III (h = 5 A); the data's damage uses the same s0, so only the "
+                  "displacement error compares across s0:\n");
+      for (const double s : scan) row(samples[0].name, predict(file.sets.at(samples[0].set), samples[0], fit, delta,
+                                                               s, substeps, layer), samples[0].paper);
+    }
+    std::printf("\ntotal %.1f s\n", seconds(t0));
+  } catch (const std::exception& e) {
+    std::cerr << "learn_predict: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
