@@ -48,12 +48,17 @@ PredictionError predictionError(const DamagedLpsOperator& op, const FractureFram
                                 const PredictionSetup& s) {
   require(run.finite && run.u.size() == s.lastFrame + 1, "prediction error: the run did not reach the last frame");
   Sums u, phi, shifted;
+  double lastDamage = 0, lastDamageData = 0;
   std::vector<double> smax = s.initialStretch;
   for (std::size_t f = 0; f <= s.lastFrame; ++f) {
     op.updateMaxStretch(data.u[f], smax);
     if (f == 0) continue;
     u.add(run.u[f], data.u[f]);
-    phi.add(op.damage(run.maxStretch[f], s.s0), op.damage(smax, s.s0));
+    const std::vector<double> pred = op.damage(run.maxStretch[f], s.s0), truth = op.damage(smax, s.s0);
+    phi.add(pred, truth);
+    if (f == s.lastFrame)
+      for (std::size_t p = 0; p < pred.size(); ++p)
+        lastDamage += pred[p] / pred.size(), lastDamageData += truth[p] / pred.size();
     double mean[2] = {0, 0};
     for (std::size_t k = 0; k < data.u[f].size(); ++k) mean[k % 2] += (run.u[f][k] - data.u[f][k]) * 2.0 / data.u[f].size();
     std::vector<double> back = run.u[f];
@@ -62,7 +67,7 @@ PredictionError predictionError(const DamagedLpsOperator& op, const FractureFram
   }
   const auto frames = static_cast<double>(s.lastFrame);
   return {std::sqrt(u.err / u.ref), std::sqrt(phi.err / phi.ref), u.meanRatio / frames, phi.meanRatio / frames,
-          std::sqrt(shifted.err / shifted.ref)};
+          std::sqrt(shifted.err / shifted.ref), lastDamage, lastDamageData};
 }
 
 }  // namespace peristep::learning

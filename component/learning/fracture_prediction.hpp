@@ -32,6 +32,7 @@ struct PredictionError {
   double displacement = 0, damage = 0;
   double displacementMean = 0, damageMean = 0;
   double displacementShifted = 0;
+  double lastDamage = 0, lastDamageData = 0;  // mean damage over the points at lastFrame
 };
 PredictionError predictionError(const DamagedLpsOperator& op, const FractureFrames& data, const FractureRun& run,
                                 const PredictionSetup& setup);
