@@ -161,9 +161,15 @@ int main(int argc, char** argv) {
     if (!scan.empty()) {
       std::printf("\ns0 scan on sample III (h = 5 A); the data's damage uses the same s0, so only the "
                   "displacement error compares across s0:\n");
-      for (const double s : scan) row(samples[0].name, predict(file.sets.at(samples[0].set), samples[0], fit, delta,
-                                                               s, substeps, layer, increments),
-                                  samples[0].paper);
+      double best = NAN, bestError = INFINITY;
+      for (const double s : scan) {
+        const Outcome o = predict(file.sets.at(samples[0].set), samples[0], fit, delta, s, substeps, layer, increments);
+        row(samples[0].name, o, samples[0].paper);
+        if (o.finite && o.error.displacement < bestError) best = s, bestError = o.error.displacement;
+      }
+      std::printf("\nwith the s0 of the smallest displacement error on III, %.4f:\n", best);
+      for (const Sample& smp : samples)
+        row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, best, substeps, layer, increments), smp.paper);
     }
     std::printf("\ntotal %.1f s\n", seconds(t0));
   } catch (const std::exception& e) {
