@@ -2,7 +2,7 @@
 // sets, delta = 20 A, P = 4, the choice of learn_lps) runs the coarse-grained fracture samples forward from
 // frame 0 and is compared with the MD frames: relative displacement and damage errors over 40 frames.
 //   learn_predict [--data data/learning/graphene_md.h5] [--s0 0.11] [--substeps 8] [--layer 1]
-//                 [--scan 0.05,0.08,0.11,0.15,0.2] [--increments]
+//                 [--scan 0.05,0.08,0.11,0.15,0.2] [--increments] [--diagnose]
 // Samples: III (training, h = 5 A; vertical edges prescribed), IV (test, h = 5 A; free edges, body force),
 // III on h = 3.17 A with delta = 4 h and s0 sqrt(5/3.17) (003 Sec. 5.4).
 #include <chrono>
@@ -64,12 +64,65 @@ void balance(const DamagedLpsOperator& op, const FractureFrames& data, const Pre
   out.netForce = std::hypot(mean[0], mean[1]) / n, out.rmsForce = std::sqrt(ll / n), out.rmsInertia = std::sqrt(aa / n);
 }
 
-constexpr double kHalfSide = 50.0;  // the MD sheet is [-50, 50]^2 A, slit at x1 = 0 from x2 = -50 to -25
+constexpr double kHalfSide = 50.0;
+
+// --diagnose (sample III): is frame 0 an equilibrium of the learned model? Strains of frame 0 (least-squares
+// slopes of u1 in x1, u2 in x2 over the free points with |x1| > 12 A, away from the slit), the model's
+// traction-free lateral strain for that stretch (plane stress: sigma22 = 0 -> e22 = -lambda/(lambda+2mu) e11),
+// the force L_KN of both linear fields and how far the model moves them in 40 frames from rest with the edge
+// layers held and no damage, without and with the slit (broken from the start); the same from MD frame 0.
+void diagnose(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& s, const KernelFit& fit,
+              double delta) {
+  const CoarseGrid& g = op.grid();
+  constexpr double kNoDamage = 1e3;  // s0: only the slit's bonds (stretch +infinity) are broken
+  double n = 0, sx = 0, sxx = 0, sxu = 0, su = 0, sy = 0, syy = 0, syv = 0, sv = 0;
+  for (std::size_t p = 0; p < g.size(); ++p) {
+    if (s.prescribed[p] || std::abs(g.x(p)) < 12) continue;
+    const double x = g.x(p), y = g.y(p), ux = data.u[0][2 * p], uy = data.u[0][2 * p + 1];
+    n += 1, sx += x, sxx += x * x, sxu += x * ux, su += ux, sy += y, syy += y * y, syv += y * uy, sv += uy;
+  }
+  const double e11 = (n * sxu - sx * su) / (n * sxx - sx * sx), e22 = (n * syv - sy * sv) / (n * syy - sy * sy);
+  const double e22Model = -fit.lambda / (fit.lambda + 2 * fit.mu) * e11;
+  std::printf("    frame 0: e11 = %.4f, e22 = %.4f; the model's traction-free e22 = %.4f\n", e11, e22, e22Model);
+  // rms of L_KN,2 in the top and bottom delta layers and inside, largest |u - u0| after 40 frames and where.
+  const auto report = [&](const char* what, const std::vector<double>& u0, const std::vector<double>& slit) {
+    std::vector<double> smax = slit;
+    op.updateMaxStretch(u0, smax);
+    const std::vector<double> L = op.apply(u0, smax, kNoDamage);
+    double layer = 0, nl = 0, inside = 0, ni = 0;
+    for (std::size_t p = 0; p < g.size(); ++p) {
+      if (s.prescribed[p]) continue;
+      const double l2 = L[2 * p + 1] * L[2 * p + 1];
+      if (std::abs(g.y(p)) > kHalfSide - delta) layer += l2, nl += 1; else inside += l2, ni += 1;
+    }
+    FractureDrive d;
+    d.rho = data.rho, d.prescribed = s.prescribed, d.u0 = u0, d.u1 = u0, d.initialStretch = slit;
+    d.boundary = [&](double, std::vector<double>& v) { v = u0; };
+    const FractureRun r = runFracture(op, d, kNoDamage, data.interval / 8, 40 * 8, 40 * 8);
+    std::size_t km = 0;
+    for (std::size_t k = 0; k < u0.size(); ++k)
+      if (std::abs(r.u.back()[k] - u0[k]) > std::abs(r.u.back()[km] - u0[km])) km = k;
+    std::printf("    %-34s %-8s rms L_KN,2 %.2e (top/bottom layers) %.2e (inside); held at rest 40 frames: "
+                "largest |u - u0| %.3g A (u%zu at (%.1f, %.1f))\n",
+                what, slit.empty() ? "no slit" : "slit", std::sqrt(layer / nl), std::sqrt(inside / ni),
+                std::abs(r.u.back()[km] - u0[km]), km % 2 + 1, g.x(km / 2), g.y(km / 2));
+  };
+  for (const std::vector<double>& slit : {std::vector<double>{}, s.initialStretch}) {
+    for (const double e : {e22, e22Model}) {
+      std::vector<double> u(2 * g.size());
+      for (std::size_t p = 0; p < g.size(); ++p) u[2 * p] = e11 * g.x(p), u[2 * p + 1] = e * g.y(p);
+      char what[64];
+      std::snprintf(what, sizeof what, "u = (%.4f x1, %.4f x2)", e11, e);
+      report(what, u, slit);
+    }
+    report("MD frame 0", data.u[0], slit);
+  }
+}
 
 // increments: the frames minus frame 0, i.e. frame 0 taken as the unstressed reference state (sample III
 // is pre-stretched by 10% in MD, a state 003's sample is not in and the learned linear model is not made for).
 Outcome predict(const CoarseDataSet& set, const Sample& smp, const KernelFit& fit, double delta0, double s0,
-                std::size_t substeps, double layer, bool increments) {
+                std::size_t substeps, double layer, bool increments, bool diagnostics = false) {
   const auto t0 = std::chrono::steady_clock::now();
   FractureFrames data = fractureFrames(set);
   if (increments)
@@ -91,6 +144,7 @@ Outcome predict(const CoarseDataSet& set, const Sample& smp, const KernelFit& fi
   out.points = set.grid.size();
   for (const char c : s.prescribed) out.prescribed += c ? 1 : 0;
   balance(op, data, s, out);
+  if (diagnostics && smp.edgesDriven) diagnose(op, data, s, fit, delta);
   const FractureRun run = predictFracture(op, data, s);
   out.finite = run.finite;
   if (run.finite) out.error = predictionError(op, data, run, s);
@@ -107,7 +161,7 @@ int main(int argc, char** argv) {
   int order = 4;
   std::size_t substeps = 8;
   std::vector<double> scan;
-  bool increments = false;
+  bool increments = false, diagnostics = false;
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--delta", delta, "horizon of the learned kernel [A] (learn_lps's choice: 20)");
   app.add_option("--order", order, "Bernstein order P (learn_lps's choice: 4)");
@@ -115,6 +169,7 @@ int main(int argc, char** argv) {
   app.add_option("--substeps", substeps, "explicit steps per MD frame interval");
   app.add_option("--layer", layer, "width of the prescribed edge layers of sample III, in delta");
   app.add_flag("--increments", increments, "predict u - u(frame 0): frame 0 as the unstressed reference state");
+  app.add_flag("--diagnose", diagnostics, "sample III: is frame 0 an equilibrium of the learned model?");
   app.add_option("--scan", scan, "also: errors on sample III for these s0")->delimiter(',');
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
   try {
@@ -157,7 +212,8 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     };
     for (const Sample& smp : samples)
-      row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, s0, substeps, layer, increments), smp.paper);
+      row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, s0, substeps, layer, increments, diagnostics),
+          smp.paper);
     if (!scan.empty()) {
       std::printf("\ns0 scan on sample III (h = 5 A); the data's damage uses the same s0, so only the "
                   "displacement error compares across s0:\n");
