@@ -2,7 +2,7 @@
 // sets, delta = 20 A, P = 4, the choice of learn_lps) runs the coarse-grained fracture samples forward from
 // frame 0 and is compared with the MD frames: relative displacement and damage errors over 40 frames.
 //   learn_predict [--data data/learning/graphene_md.h5] [--s0 0.11] [--substeps 8] [--layer 1]
-//                 [--scan 0.05,0.08,0.11,0.15,0.2] [--increments] [--diagnose]
+//                 [--scan 0.05,0.08,0.11,0.15,0.2] [--increments] [--diagnose] [--per-frame]
 // Samples: III (training, h = 5 A; vertical edges prescribed), IV (test, h = 5 A; free edges, body force),
 // III on h = 3.17 A with delta = 4 h and s0 sqrt(5/3.17) (003 Sec. 5.4).
 #include <chrono>
@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
   int order = 4;
   std::size_t substeps = 8;
   std::vector<double> scan;
-  bool increments = false, diagnostics = false;
+  bool increments = false, diagnostics = false, perFrame = false;
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--delta", delta, "horizon of the learned kernel [A] (learn_lps's choice: 20)");
   app.add_option("--order", order, "Bernstein order P (learn_lps's choice: 4)");
@@ -169,6 +169,7 @@ int main(int argc, char** argv) {
   app.add_option("--substeps", substeps, "explicit steps per MD frame interval");
   app.add_option("--layer", layer, "width of the prescribed edge layers of sample III, in delta");
   app.add_flag("--increments", increments, "predict u - u(frame 0): frame 0 as the unstressed reference state");
+  app.add_flag("--per-frame", perFrame, "also the displacement error of every 5th frame");
   app.add_flag("--diagnose", diagnostics, "sample III: is frame 0 an equilibrium of the learned model?");
   app.add_option("--scan", scan, "also: errors on sample III for these s0")->delimiter(',');
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
@@ -200,7 +201,7 @@ int main(int argc, char** argv) {
     std::printf("%-26s %7s %11s %7s %7s %7s %7s %7s %11s %9s %8s %8s %8s %7s\n", "sample", "s0", "prescribed",
                 "u err%", "phi%", "u mean%", "phi mn%", "u shift", "phi 40", "003 u/phi", "mean L", "rms L", "rms rho a",
                 "wall s");
-    const auto row = [](const char* name, const Outcome& o, const char* paper) {
+    const auto row = [perFrame](const char* name, const Outcome& o, const char* paper) {
       if (!o.finite) {
         std::printf("%-26s %7.4f %5zu/%-5zu  unstable (non-finite displacement)\n", name, o.s0, o.prescribed, o.points);
         return;
@@ -209,6 +210,12 @@ int main(int argc, char** argv) {
                   name, o.s0, o.prescribed, o.points, 100 * o.error.displacement, 100 * o.error.damage,
                   100 * o.error.displacementMean, 100 * o.error.damageMean, 100 * o.error.displacementShifted,
                   o.error.lastDamage, o.error.lastDamageData, paper, o.netForce, o.rmsForce, o.rmsInertia, o.wall);
+      if (perFrame) {
+        std::printf("    u err %% at frames");
+        for (std::size_t f = 5; f <= o.error.frameDisplacement.size(); f += 5)
+          std::printf(" %zu: %.1f", f, 100 * o.error.frameDisplacement[f - 1]);
+        std::printf("\n");
+      }
       std::fflush(stdout);
     };
     for (const Sample& smp : samples)

@@ -20,11 +20,13 @@ void interpolate(const std::vector<std::vector<double>>& frames, double frame, s
 
 struct Sums {
   double err = 0, ref = 0, meanRatio = 0;
-  void add(const std::vector<double>& pred, const std::vector<double>& data) {
+  double add(const std::vector<double>& pred, const std::vector<double>& data) {  // the frame's ratio
     double e = 0, r = 0;
     for (std::size_t k = 0; k < data.size(); ++k) e += (pred[k] - data[k]) * (pred[k] - data[k]), r += data[k] * data[k];
     err += e, ref += r;
-    meanRatio += r > 0 ? std::sqrt(e / r) : 0.0;
+    const double ratio = r > 0 ? std::sqrt(e / r) : 0.0;
+    meanRatio += ratio;
+    return ratio;
   }
 };
 
@@ -49,11 +51,12 @@ PredictionError predictionError(const DamagedLpsOperator& op, const FractureFram
   require(run.finite && run.u.size() == s.lastFrame + 1, "prediction error: the run did not reach the last frame");
   Sums u, phi, shifted;
   double lastDamage = 0, lastDamageData = 0;
+  std::vector<double> frameRatio;
   std::vector<double> smax = s.initialStretch;
   for (std::size_t f = 0; f <= s.lastFrame; ++f) {
     op.updateMaxStretch(data.u[f], smax);
     if (f == 0) continue;
-    u.add(run.u[f], data.u[f]);
+    frameRatio.push_back(u.add(run.u[f], data.u[f]));
     const std::vector<double> pred = op.damage(run.maxStretch[f], s.s0), truth = op.damage(smax, s.s0);
     phi.add(pred, truth);
     if (f == s.lastFrame)
@@ -67,7 +70,7 @@ PredictionError predictionError(const DamagedLpsOperator& op, const FractureFram
   }
   const auto frames = static_cast<double>(s.lastFrame);
   return {std::sqrt(u.err / u.ref), std::sqrt(phi.err / phi.ref), u.meanRatio / frames, phi.meanRatio / frames,
-          std::sqrt(shifted.err / shifted.ref), lastDamage, lastDamageData};
+          std::sqrt(shifted.err / shifted.ref), lastDamage, lastDamageData, frameRatio};
 }
 
 }  // namespace peristep::learning

@@ -33,6 +33,7 @@ struct PredictionError {
   double displacementMean = 0, damageMean = 0;
   double displacementShifted = 0;
   double lastDamage = 0, lastDamageData = 0;  // mean damage over the points at lastFrame
+  std::vector<double> frameDisplacement;       // |pred_f - data_f| / |data_f|, f = 1..lastFrame
 };
 PredictionError predictionError(const DamagedLpsOperator& op, const FractureFrames& data, const FractureRun& run,
                                 const PredictionSetup& setup);
