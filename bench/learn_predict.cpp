@@ -64,7 +64,7 @@ void balance(const DamagedLpsOperator& op, const FractureFrames& data, const Pre
   out.netForce = std::hypot(mean[0], mean[1]) / n, out.rmsForce = std::sqrt(ll / n), out.rmsInertia = std::sqrt(aa / n);
 }
 
-constexpr double kHalfSide = 50.0;
+constexpr double kHalfSide = 50.0;  // the MD sheet is [-50, 50]^2 A, the slit x1 = 0, x2 from -50 to -25 A
 
 // --diagnose (sample III): is frame 0 an equilibrium of the learned model? Strains of frame 0 (least-squares
 // slopes of u1 in x1, u2 in x2 over the free points with |x1| > 12 A, away from the slit), the model's
@@ -196,11 +196,12 @@ int main(int argc, char** argv) {
         {"III training, h = 3.17 A", "fracture_train_fine", 4, true, std::sqrt(5.0 / 3.17), "19 / 30"},
     };
     std::printf("u, phi err: sqrt(sum_f |pred - MD|^2 / sum_f |MD|^2), frames 1-40; mean: of the per-frame ratios; "
-                "u shift: u err without the mean of pred - MD per frame;\nphi 40: mean damage at frame 40, predicted / MD; frame 1 [eV/A^4]: |mean L_KN[u]|, rms "
-                "L_KN[u], rms rho u'' of the MD frames over the free points\n");
+                "u shift: u err without the mean of pred - MD per frame;\nphi 40: mean damage at frame 40, predicted / "
+                "MD; frame 1 [eV/A^4]: |mean L_KN[u]|, rms L_KN[u], rms rho u'' of the MD frames over the free "
+                "points\n");
     std::printf("%-26s %7s %11s %7s %7s %7s %7s %7s %11s %9s %8s %8s %8s %7s\n", "sample", "s0", "prescribed",
-                "u err%", "phi%", "u mean%", "phi mn%", "u shift", "phi 40", "003 u/phi", "mean L", "rms L", "rms rho a",
-                "wall s");
+                "u err%", "phi%", "u mean%", "phi mn%", "u shift", "phi 40", "003 u/phi", "mean L", "rms L",
+                "rms rho a", "wall s");
     const auto row = [perFrame](const char* name, const Outcome& o, const char* paper) {
       if (!o.finite) {
         std::printf("%-26s %7.4f %5zu/%-5zu  unstable (non-finite displacement)\n", name, o.s0, o.prescribed, o.points);

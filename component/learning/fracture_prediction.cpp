@@ -22,7 +22,8 @@ struct Sums {
   double err = 0, ref = 0, meanRatio = 0;
   double add(const std::vector<double>& pred, const std::vector<double>& data) {  // the frame's ratio
     double e = 0, r = 0;
-    for (std::size_t k = 0; k < data.size(); ++k) e += (pred[k] - data[k]) * (pred[k] - data[k]), r += data[k] * data[k];
+    for (std::size_t k = 0; k < data.size(); ++k)
+      e += (pred[k] - data[k]) * (pred[k] - data[k]), r += data[k] * data[k];
     err += e, ref += r;
     const double ratio = r > 0 ? std::sqrt(e / r) : 0.0;
     meanRatio += ratio;
@@ -62,8 +63,9 @@ PredictionError predictionError(const DamagedLpsOperator& op, const FractureFram
     if (f == s.lastFrame)
       for (std::size_t p = 0; p < pred.size(); ++p)
         lastDamage += pred[p] / pred.size(), lastDamageData += truth[p] / pred.size();
-    double mean[2] = {0, 0};
-    for (std::size_t k = 0; k < data.u[f].size(); ++k) mean[k % 2] += (run.u[f][k] - data.u[f][k]) * 2.0 / data.u[f].size();
+    double mean[2] = {0, 0};  // of pred - data per component
+    const double points = static_cast<double>(data.u[f].size() / 2);
+    for (std::size_t k = 0; k < data.u[f].size(); ++k) mean[k % 2] += (run.u[f][k] - data.u[f][k]) / points;
     std::vector<double> back = run.u[f];
     for (std::size_t k = 0; k < back.size(); ++k) back[k] -= mean[k % 2];
     shifted.add(back, data.u[f]);
