@@ -3,6 +3,7 @@
 // frame 0 and is compared with the MD frames: relative displacement and damage errors over 40 frames.
 //   learn_predict [--data data/learning/graphene_md.h5] [--s0 0.11] [--substeps 8] [--layer 1]
 //                 [--scan 0.05,0.08,0.11,0.15,0.2] [--increments] [--diagnose] [--per-frame]
+//                 [--no-free-surface]
 // Samples: III (training, h = 5 A; vertical edges prescribed), IV (test, h = 5 A; free edges, body force),
 // III on h = 3.17 A with delta = 4 h and s0 sqrt(5/3.17) (003 Sec. 5.4).
 #include <chrono>
@@ -122,7 +123,7 @@ void diagnose(const DamagedLpsOperator& op, const FractureFrames& data, const Pr
 // increments: the frames minus frame 0, i.e. frame 0 taken as the unstressed reference state (sample III
 // is pre-stretched by 10% in MD, a state 003's sample is not in and the learned linear model is not made for).
 Outcome predict(const CoarseDataSet& set, const Sample& smp, const KernelFit& fit, double delta0, double s0,
-                std::size_t substeps, double layer, bool increments, bool diagnostics = false) {
+                std::size_t substeps, double layer, bool increments, bool freeSurface, bool diagnostics = false) {
   const auto t0 = std::chrono::steady_clock::now();
   FractureFrames data = fractureFrames(set);
   if (increments)
@@ -130,8 +131,8 @@ Outcome predict(const CoarseDataSet& set, const Sample& smp, const KernelFit& fi
       for (std::size_t k = 0; k < data.u[f].size(); ++k) data.u[f][k] -= data.u[0][k];
   const double delta = smp.deltaPerH > 0 ? smp.deltaPerH * set.grid.hx : delta0;
   const BernsteinKernel kernel{delta, fit.kernel.alpha, fit.kernel.D};  // K/m only: the scale does not matter
-  const DamagedLpsOperator op(set.grid, makeLatticeStencil(set.grid.hx, set.grid.hy, delta), kernel, fit.lambda,
-                              fit.mu);
+  DamagedLpsOperator op(set.grid, makeLatticeStencil(set.grid.hx, set.grid.hy, delta), kernel, fit.lambda, fit.mu);
+  op.setFreeSurfaceTerms(freeSurface);
   PredictionSetup s;
   s.s0 = s0 * smp.s0Scale;
   s.substeps = substeps;
@@ -161,7 +162,7 @@ int main(int argc, char** argv) {
   int order = 4;
   std::size_t substeps = 8;
   std::vector<double> scan;
-  bool increments = false, diagnostics = false, perFrame = false;
+  bool increments = false, diagnostics = false, perFrame = false, noFreeSurface = false;
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--delta", delta, "horizon of the learned kernel [A] (learn_lps's choice: 20)");
   app.add_option("--order", order, "Bernstein order P (learn_lps's choice: 4)");
@@ -169,6 +170,7 @@ int main(int argc, char** argv) {
   app.add_option("--substeps", substeps, "explicit steps per MD frame interval");
   app.add_option("--layer", layer, "width of the prescribed edge layers of sample III, in delta");
   app.add_flag("--increments", increments, "predict u - u(frame 0): frame 0 as the unstressed reference state");
+  app.add_flag("--no-free-surface", noFreeSurface, "without the free-surface sums of 003:(30), for comparison");
   app.add_flag("--per-frame", perFrame, "also the displacement error of every 5th frame");
   app.add_flag("--diagnose", diagnostics, "sample III: is frame 0 an equilibrium of the learned model?");
   app.add_option("--scan", scan, "also: errors on sample III for these s0")->delimiter(',');
@@ -220,20 +222,23 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     };
     for (const Sample& smp : samples)
-      row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, s0, substeps, layer, increments, diagnostics),
+      row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, s0, substeps, layer, increments, !noFreeSurface,
+                  diagnostics),
           smp.paper);
     if (!scan.empty()) {
       std::printf("\ns0 scan on sample III (h = 5 A); the data's damage uses the same s0, so only the "
                   "displacement error compares across s0:\n");
       double best = NAN, bestError = INFINITY;
       for (const double s : scan) {
-        const Outcome o = predict(file.sets.at(samples[0].set), samples[0], fit, delta, s, substeps, layer, increments);
+        const Outcome o = predict(file.sets.at(samples[0].set), samples[0], fit, delta, s, substeps, layer, increments,
+                                  !noFreeSurface);
         row(samples[0].name, o, samples[0].paper);
         if (o.finite && o.error.displacement < bestError) best = s, bestError = o.error.displacement;
       }
       std::printf("\nwith the s0 of the smallest displacement error on III, %.4f:\n", best);
       for (const Sample& smp : samples)
-        row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, best, substeps, layer, increments), smp.paper);
+        row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, best, substeps, layer, increments, !noFreeSurface),
+            smp.paper);
     }
     std::printf("\ntotal %.1f s\n", seconds(t0));
   } catch (const std::exception& e) {

@@ -151,7 +151,7 @@ std::vector<double> DamagedLpsOperator::apply(const std::vector<double>& u, cons
         Ly += (dil + dev) * zy;
       }
       const double kb = KW * (1.0 - gm);
-      if (kb == 0.0) continue;
+      if (kb == 0.0 || !freeSurface_) continue;
       const double zn = zx * nx[p] + zy * ny[p], zp = zx * px + zy * py;
       Lx += -2.0 * kC1 * theta[p] / m_ * (lambda_ - mu_) * kb * zx;
       Ly += -2.0 * kC1 * theta[p] / m_ * (lambda_ - mu_) * kb * zy;
