@@ -39,6 +39,7 @@ struct Outcome {
   PredictionError error;
   double netForce = 0, rmsForce = 0, rmsInertia = 0;  // frame 1 of the data: see balance()
   double wall = 0, s0 = 0;
+  double rmsLast = 0;  // rms over the points of |u_MD| at the last frame [A]
   std::size_t prescribed = 0, points = 0;
   bool finite = true;
 };
@@ -145,6 +146,8 @@ Outcome predict(const CoarseDataSet& set, const Sample& smp, const KernelFit& fi
   out.points = set.grid.size();
   for (const char c : s.prescribed) out.prescribed += c ? 1 : 0;
   balance(op, data, s, out);
+  for (const double v : data.u[s.lastFrame]) out.rmsLast += v * v;
+  out.rmsLast = std::sqrt(out.rmsLast / static_cast<double>(set.grid.size()));
   if (diagnostics && smp.edgesDriven) diagnose(op, data, s, fit, delta);
   const FractureRun run = predictFracture(op, data, s);
   out.finite = run.finite;
@@ -217,7 +220,7 @@ int main(int argc, char** argv) {
         std::printf("    u err %% at frames");
         for (std::size_t f = 5; f <= o.error.frameDisplacement.size(); f += 5)
           std::printf(" %zu: %.1f", f, 100 * o.error.frameDisplacement[f - 1]);
-        std::printf("\n");
+        std::printf("; rms |u_MD| at frame %zu: %.2f A\n", o.error.frameDisplacement.size(), o.rmsLast);
       }
       std::fflush(stdout);
     };
