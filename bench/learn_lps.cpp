@@ -12,6 +12,7 @@
 
 #include "bench_cli.hpp"
 #include "learning/coarse_data_file.hpp"
+#include "learning/data_sets.hpp"
 #include "learning/fracture_residual.hpp"
 #include "learning/kernel_fit.hpp"
 #include "learning/learned_lps_force_model.hpp"
@@ -22,31 +23,6 @@
 using namespace peristep::learning;
 
 namespace {
-
-constexpr double kTPaPerEvA3 = 0.1602176634;  // 1 eV/A^3 = 160.2 GPa
-constexpr double kTimeUnit = 1.0180505e-14;    // sqrt(amu A^2 / eV) in s
-
-struct Data {
-  PeriodicLattice lattice;
-  std::vector<StaticSample> samples;
-  std::vector<double> weight;
-  double rho = 0;  // mean coarse-grained density [amu/A^3]
-};
-
-Data staticData(const CoarseDataSet& set) {
-  Data d{PeriodicLattice{set.grid.nx, set.grid.ny, set.grid.hx, set.grid.hy}, {}, {}, 0.0};
-  double rho = 0;
-  std::size_t count = 0;
-  for (const CoarseFields& f : set.samples) {
-    d.samples.push_back({f.u, f.b});
-    double bb = 0;
-    for (double b : f.b) bb += b * b;
-    d.weight.push_back(1.0 / std::sqrt(bb / static_cast<double>(f.b.size())));  // relative residual per sample
-    for (double r : f.rho) rho += r, ++count;
-  }
-  d.rho = rho / static_cast<double>(count);
-  return d;
-}
 
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -73,7 +49,7 @@ int main(int argc, char** argv) {
   try {
     const auto t0 = std::chrono::steady_clock::now();
     const CoarseDataFile file = readCoarseData(path);
-    const Data train = staticData(file.sets.at("train")), val = staticData(file.sets.at("validation"));
+    const StaticData train = staticData(file.sets.at("train")), val = staticData(file.sets.at("validation"));
     const double thickness = file.sets.at("train").thickness;
     std::printf("train %zu samples, validation %zu, lattice %zu x %zu (h = %.3f x %.3f A), rho = %.5f amu/A^3\n",
                 train.samples.size(), val.samples.size(), train.lattice.nx, train.lattice.ny, train.lattice.hx,
@@ -130,8 +106,7 @@ int main(int argc, char** argv) {
     // Step 2 (003 Algorithm 1 (v)): s0 from frames first..last of the fracture training sample.
     const auto t2 = std::chrono::steady_clock::now();
     const CoarseDataSet& frac = file.sets.at("fracture_train");
-    FractureFrames frames{frac.grid, frac.frameInterval / kTimeUnit, frac.samples.front().rho, {}, {}};
-    for (const CoarseFields& fr : frac.samples) frames.u.push_back(fr.u), frames.b.push_back(fr.b);
+    const FractureFrames frames = fractureFrames(frac);
     const LatticeStencil fst = makeLatticeStencil(frac.grid.hx, frac.grid.hy, best.delta);
     const DamagedLpsOperator op(frac.grid, fst, f.kernel, f.lambda, f.mu);
     // The MD slit (x1 = 0, x2 from -50 to -25 A) is broken from the start.

@@ -73,12 +73,30 @@ void DamagedLpsOperator::updateMaxStretch(const std::vector<double>& u, std::vec
     }
 }
 
+std::vector<double> DamagedLpsOperator::bondStates(const std::vector<double>& smax, double s0) const {
+  std::vector<double> gam(smax.size());  // 003:(28)
+  for (std::size_t k = 0; k < smax.size(); ++k) gam[k] = 0.5 * (1.0 - std::tanh((smax[k] - s0) / eta_));
+  return gam;
+}
+
+std::vector<double> DamagedLpsOperator::damage(const std::vector<double>& smax, double s0) const {
+  const std::size_t S = stencil_.size();
+  const std::vector<double> gam = bondStates(smax, s0);
+  std::vector<double> phi(grid_.size(), 0.0);
+  for (std::size_t p = 0; p < grid_.size(); ++p) {
+    double sum = 0, count = 0;
+    for (std::size_t s = 0; s < S; ++s)
+      if (neighbour_[p * S + s] >= 0) sum += gam[p * S + s], count += 1;
+    phi[p] = count > 0 ? 1.0 - sum / count : 0.0;  // 003:(46)
+  }
+  return phi;
+}
+
 std::vector<double> DamagedLpsOperator::apply(const std::vector<double>& u, const std::vector<double>& smax,
                                               double s0) const {
   const CoarseGrid& g = grid_;
   const std::size_t S = stencil_.size(), n = g.size();
-  std::vector<double> gam(smax.size());  // 003:(28)
-  for (std::size_t k = 0; k < smax.size(); ++k) gam[k] = 0.5 * (1.0 - std::tanh((smax[k] - s0) / eta_));
+  const std::vector<double> gam = bondStates(smax, s0);
   const auto gamma = [&](std::size_t p, std::size_t s) { return gam[p * S + s]; };
   // 003:(31)-(33): corrected dilatation and normal at every point.
   std::vector<double> theta(n, 0.0), nx(n, 0.0), ny(n, 0.0);
@@ -133,7 +151,7 @@ std::vector<double> DamagedLpsOperator::apply(const std::vector<double>& u, cons
         Ly += (dil + dev) * zy;
       }
       const double kb = KW * (1.0 - gm);
-      if (kb == 0.0) continue;
+      if (kb == 0.0 || !freeSurface_) continue;
       const double zn = zx * nx[p] + zy * ny[p], zp = zx * px + zy * py;
       Lx += -2.0 * kC1 * theta[p] / m_ * (lambda_ - mu_) * kb * zx;
       Ly += -2.0 * kC1 * theta[p] / m_ * (lambda_ - mu_) * kb * zy;

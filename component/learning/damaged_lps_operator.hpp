@@ -23,12 +23,19 @@ class DamagedLpsOperator {
   // Largest stretches to start from: +infinity (broken for every s0) on the bonds that cross the segment
   // (ax, ay)-(bx, by), a pre-existing slit; -infinity elsewhere.
   std::vector<double> slit(double ax, double ay, double bx, double by) const;
+  // Damage 003:(46) at every point: 1 - (sum of gamma over its bonds inside the lattice) / (their number).
+  std::vector<double> damage(const std::vector<double>& maxStretch, double s0) const;
   const CoarseGrid& grid() const { return grid_; }
+  // Off: without the free-surface sums of 003:(30) (its last three), for comparison.
+  void setFreeSurfaceTerms(bool on) { freeSurface_ = on; }
 
  private:
+  std::vector<double> bondStates(const std::vector<double>& maxStretch, double s0) const;  // 003:(28)
+
   CoarseGrid grid_;
   LatticeStencil stencil_;
   double lambda_, mu_, eta_;
+  bool freeSurface_ = true;
   std::vector<double> KW_;                 // K(r_s) W_s
   double m_ = 0;                           // m_i of a full neighbourhood, 003 below (18)
   std::vector<std::ptrdiff_t> neighbour_;  // [p S + s], -1 outside the lattice

@@ -1,0 +1,41 @@
+#pragma once
+// Prediction of a coarse-grained fracture sample by the learned model (003 Sec. 5.2-5.4) and its errors
+// against the sample's frames. Reading of 003 (which does not spell the driving out): the run starts from
+// frame 0 with the frame velocity (u^1 - u^0)/Delta t_frame (003 Sec. 3.1's initial conditions); the points
+// of BOmega_D (003:(29)) follow the frames, the body force is the frames' b; both linear in time between
+// frames. The model's explicit stability limit is below the frame interval, so each interval is split
+// into `substeps` steps.
+#include <cstddef>
+#include <vector>
+
+#include "learning/fracture_forward.hpp"
+#include "learning/fracture_residual.hpp"
+
+namespace peristep::learning {
+
+struct PredictionSetup {
+  std::vector<char> prescribed;        // per point: follows the frames (BOmega_D)
+  std::vector<double> initialStretch;  // e.g. the slit, broken from the start
+  double s0 = 0.11;
+  std::size_t substeps = 8;
+  std::size_t lastFrame = 40;          // predicts frames 0..lastFrame
+};
+
+FractureRun predictFracture(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& setup);
+
+// Relative errors over frames 1..lastFrame at all points, 003 Sec. 5.1 ("averaged (in time) mean square
+// errors ... normalized with respect to the ground-truth data"): sqrt(sum_f |pred_f - data_f|^2 /
+// sum_f |data_f|^2); also the mean over frames of the per-frame ratio |pred_f - data_f| / |data_f|. The
+// data's damage is 003:(46) of the data's own largest stretches, with the same slit and s0.
+// displacementShifted: the first without the mean (over points) of pred_f - data_f, a rigid translation.
+struct PredictionError {
+  double displacement = 0, damage = 0;
+  double displacementMean = 0, damageMean = 0;
+  double displacementShifted = 0;
+  double lastDamage = 0, lastDamageData = 0;  // mean damage over the points at lastFrame
+  std::vector<double> frameDisplacement;       // |pred_f - data_f| / |data_f|, f = 1..lastFrame
+};
+PredictionError predictionError(const DamagedLpsOperator& op, const FractureFrames& data, const FractureRun& run,
+                                const PredictionSetup& setup);
+
+}  // namespace peristep::learning
