@@ -129,7 +129,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
 
   // Bonds and their elements.
   firstElement_.push_back(0);
-  auto addBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l) {
+  auto addBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l, GamutBondPoints where) {
     std::array<int, 3> u{-1, -1, -1};
     std::array<double, 3> c{0, 0, 0};
     int terms = 0;
@@ -144,6 +144,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
     unknown_.push_back(u);
     coef_.push_back(c);
     length_.push_back(l);
+    points_.push_back(where);
     firstElement_.push_back(stiffness_.size());
   };
   auto addElement = [&](double k, double strain, double l) {
@@ -156,9 +157,10 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
     if (table.weight[at] >= spec.weightCutoff)
       addElement(table.weight[at] * softness[o] * A * modulus_[o] * cell[o] / (l * l), table.strain[at], l);
   };
-  auto closeBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l) {
+  auto closeBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l, GamutBondKind kind, std::size_t p,
+                       std::size_t q) {
     if (stiffness_.size() == firstElement_.back()) return false;
-    addBond(nodes, coefs, l);
+    addBond(nodes, coefs, l, {kind, static_cast<int>(p), static_cast<int>(q)});
     return true;
   };
   std::vector<CutCrossing> crossings;  // cuts j (between points j and j + 1) crossed by each bond
@@ -171,7 +173,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
       const double l = x_[q] - x_[p];
       addNonlocal(p, Inside, q, l);
       addNonlocal(q, Inside, p, l);
-      if (closeBond({static_cast<int>(q), static_cast<int>(p), -1}, {1, -1, 0}, l)) cross(p, q, 1);
+      if (closeBond({static_cast<int>(q), static_cast<int>(p), -1}, {1, -1, 0}, l, GamutBondKind::Inside, p, q)) cross(p, q, 1);
     }
   // Across x = 0: u(-x_q) = -u_q. The pair stands for the bonds p-q~ and q-p~ of the mirrored bar
   // (one bond, p~-p, when q = p), each crossing the cuts between x = 0 and its real end.
@@ -180,7 +182,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
       const double l = x_[p] + x_[q];
       addNonlocal(p, BeyondStart, q, l);
       if (q != p) addNonlocal(q, BeyondStart, p, l);
-      if (closeBond({static_cast<int>(p), static_cast<int>(q), -1}, {1, 1, 0}, l)) {
+      if (closeBond({static_cast<int>(p), static_cast<int>(q), -1}, {1, 1, 0}, l, GamutBondKind::AcrossStart, p, q)) {
         cross(0, p, q == p ? 2 : 1);
         if (q != p) cross(0, q, 1);
       }
@@ -190,7 +192,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
       const double l = 2 * L - x_[p] - x_[q];
       addNonlocal(p, BeyondEnd, q, l);
       if (q != p) addNonlocal(q, BeyondEnd, p, l);
-      if (closeBond({last, static_cast<int>(p), static_cast<int>(q)}, {2, -1, -1}, l)) {
+      if (closeBond({last, static_cast<int>(p), static_cast<int>(q)}, {2, -1, -1}, l, GamutBondKind::AcrossEnd, p, q)) {
         cross(p, n, q == p ? 2 : 1);
         if (q != p) cross(q, n, 1);
       }
@@ -210,7 +212,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
     const double l = x_[j + 1] - x_[j];
     for (std::size_t e = 0; e < bundle.stiffness.size(); ++e)
       if (bundle.stiffness[e] > 0) addElement(bundle.stiffness[e] / l, bundle.strain[e], l);
-    closeBond({static_cast<int>(j + 1), static_cast<int>(j), -1}, {1, -1, 0}, l);
+    closeBond({static_cast<int>(j + 1), static_cast<int>(j), -1}, {1, -1, 0}, l, GamutBondKind::Local, j, j + 1);
   }
 }
 
