@@ -158,12 +158,14 @@ TEST_CASE("the SIMD residual leaves a small cyclic study where the element-by-el
   spec.realizations = 3;
   const GamutStudy study = runGamutStudy(spec);
   // n' and K' of realizations 0, 1, 2 from the solver before the SIMD rows (one element after the other,
-  // commit 3c71f14): the sums now run in another order, every step still converges to 1e-9 of the force.
+  // commit 3c71f14). The sums now run in another order and the tangent is factored by LAPACK: the Newton
+  // path changes, and with it the last digits that the tolerance (1e-9 of the force per step) leaves
+  // free; 1e-6 relative is still 700x inside the 95% interval of n' of 30 realizations (4e-5 / 0.056).
   const double exponent[3] = {0x1.cd18a53449325p-5, 0x1.d11160a6e2383p-5, 0x1.d116d945fcf44p-5};
   const double coefficient[3] = {0x1.6c86ed5a87d23p+29, 0x1.6d5dce13f045dp+29, 0x1.6d63b2164702fp+29};
   for (int r = 0; r < 3; ++r) {
-    CHECK(study.runs[r].fit.exponent == Approx(exponent[r]).epsilon(1e-9));
-    CHECK(study.runs[r].fit.coefficient == Approx(coefficient[r]).epsilon(1e-9));
+    CHECK(study.runs[r].fit.exponent == Approx(exponent[r]).epsilon(1e-6));
+    CHECK(study.runs[r].fit.coefficient == Approx(coefficient[r]).epsilon(1e-6));
   }
 }
 

@@ -130,6 +130,58 @@ void GamutBarSolver::addPair(Eigen::MatrixXd& K, std::size_t j, double k) const 
   addBond(K, bar_.bondUnknowns()[b], bar_.bondCoefficients()[b], k);
 }
 
+void GamutBarSolver::addChangedPairs() {
+  // K += dk g g^T for every bond whose elastic bits changed, row by row: a row's entries K(q, p) lie in
+  // one column; the diagonal and the row of u_n are gathered by point and added once.
+  std::vector<double>& diagonal = diagonalChange_;
+  std::vector<double>& last = lastRowChange_;
+  diagonal.assign(static_cast<std::size_t>(n_) + 1, 0.0);
+  last.assign(static_cast<std::size_t>(n_) + 1, 0.0);
+  for (const gamut::PairRow& row : rows_) {
+    const int p = row.p;
+    for (std::size_t i = 0; i < row.count; ++i) {
+      const std::size_t j = row.first + i;
+      if (trialState_[j] == tangentState_[j]) continue;
+      const double dk = pairTangent(j, trialState_[j]) - pairTangent(j, tangentState_[j]);
+      tangentState_[j] = trialState_[j];
+      tangentIsElastic_ = false;
+      const int q = row.qBegin + static_cast<int>(i);
+      switch (row.kind) {
+        case gamut::PairKind::Inside:  // g = e_q - e_p
+          diagonal[q] += dk;
+          diagonal[p] += dk;
+          if (p >= 1) tangent_(q - 1, p - 1) -= dk;
+          break;
+        case gamut::PairKind::AcrossStart:  // g = e_p + e_q (p >= 1)
+          if (q == p) {
+            diagonal[p] += 4 * dk;
+          } else {
+            diagonal[p] += dk;
+            diagonal[q] += dk;
+            tangent_(q - 1, p - 1) += dk;
+          }
+          break;
+        case gamut::PairKind::AcrossEnd:  // g = 2 e_n - e_p - e_q (q < n)
+          diagonal[n_] += 4 * dk;
+          if (q == p) {
+            diagonal[p] += 4 * dk;
+            last[p] -= 4 * dk;
+          } else {
+            diagonal[p] += dk;
+            diagonal[q] += dk;
+            last[p] -= 2 * dk;
+            last[q] -= 2 * dk;
+            if (p >= 1) tangent_(q - 1, p - 1) += dk;
+          }
+          break;
+      }
+    }
+  }
+  // Point 0 is the fixed end: no unknown.
+  for (int point = 1; point <= n_; ++point) tangent_(point - 1, point - 1) += diagonal[point];
+  for (int point = 1; point < n_; ++point) tangent_(n_ - 1, point - 1) += last[point];
+}
+
 void GamutBarSolver::useElasticTangent() {
   if (!tangentIsElastic_) {
     tangent_ = elastic_;
@@ -144,12 +196,7 @@ void GamutBarSolver::useElasticTangent() {
 void GamutBarSolver::factorize() {
   // The bonds' tangents of the last evaluation go into the matrix only now: most evaluations are
   // followed by a solve with the old factor and need no matrix at all.
-  for (std::size_t j = 0; j < trialState_.size(); ++j)
-    if (trialState_[j] != tangentState_[j]) {
-      addPair(tangent_, j, pairTangent(j, trialState_[j]) - pairTangent(j, tangentState_[j]));
-      tangentState_[j] = trialState_[j];
-      tangentIsElastic_ = false;
-    }
+  addChangedPairs();
   for (std::size_t b = 0; b < unknown_.size(); ++b)
     if (trialTangent_[b] != bondTangent_[b]) {
       addBond(tangent_, unknown_[b], coef_[b], trialTangent_[b] - bondTangent_[b]);
@@ -162,7 +209,7 @@ void GamutBarSolver::factorize() {
   if (doublePrecision_)
     factorDouble_.compute(tangent_);
   else
-    factor_.compute(tangent_.cast<float>());
+    factor_.compute(tangent_);
   ++counters_.factorizations;
   refactor_ = false;
   usingElasticFactor_ = false;

@@ -17,6 +17,7 @@
 #include "core/errors.hpp"
 #include "models/gamut_bar.hpp"
 #include "solvers/gamut_pair_kernels.hpp"
+#include "solvers/dense_cholesky.hpp"
 
 namespace peristep {
 
@@ -70,6 +71,7 @@ class GamutBarSolver {
   // Tangent of pair j with the elastic bits `state`; K += k g g^T of pair j's bond.
   double pairTangent(std::size_t j, std::uint8_t state) const;
   void addPair(Eigen::MatrixXd& K, std::size_t j, double k) const;
+  void addChangedPairs();  // the changes of the pairs' elastic bits into tangent_
   gamut::PairElements pairElements() const;
 
   const GamutBar& bar_;
@@ -83,6 +85,7 @@ class GamutBarSolver {
   std::vector<long> pairBond_;
   std::vector<std::uint8_t> trialState_, tangentState_;
   std::size_t slippingPairs_ = 0;
+  std::vector<double> diagonalChange_, lastRowChange_;  // by point, for addChangedPairs
   // The local bonds with elements that may slip (many elements each), element by element; slot_: the
   // points of the bond's unknowns (point 0, the fixed end, for no term).
   std::vector<std::array<int, 3>> unknown_, slot_;
@@ -94,8 +97,8 @@ class GamutBarSolver {
   std::vector<unsigned char> bondSlipping_;
   Eigen::MatrixXd linear_, elastic_, tangent_;  // lower triangles are used
   Eigen::LLT<Eigen::MatrixXd> elasticFactor_;
-  Eigen::LLT<Eigen::MatrixXf> factor_;
-  Eigen::LLT<Eigen::MatrixXd> factorDouble_;  // once a step failed with the single-precision factor
+  DenseCholesky<float> factor_;
+  DenseCholesky<double> factorDouble_;  // once a step failed with the single-precision factor
   bool usingElasticFactor_ = true, tangentIsElastic_ = true, tangentChanged_ = false;
   bool doublePrecision_ = false, refactor_ = false;
   std::size_t activeElements_ = 0;
