@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -141,6 +142,12 @@ void GamutBarSolver::addChangedPairs() {
     const int p = row.p;
     for (std::size_t i = 0; i < row.count; ++i) {
       const std::size_t j = row.first + i;
+      // Most bonds keep their bits: compare kPairLanes of them at once (rows start at multiples of it).
+      if (i % gamut::kPairLanes == 0 &&
+          std::memcmp(&trialState_[j], &tangentState_[j], gamut::kPairLanes) == 0) {
+        i += gamut::kPairLanes - 1;
+        continue;
+      }
       if (trialState_[j] == tangentState_[j]) continue;
       const double dk = pairTangent(j, trialState_[j]) - pairTangent(j, tangentState_[j]);
       tangentState_[j] = trialState_[j];
