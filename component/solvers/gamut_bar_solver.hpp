@@ -7,6 +7,8 @@
 // elements have switched and it no longer does. Elements whose critical strain lies beyond
 // `linearStrain` cannot slip while no local bond is strained that far (an element's strain is an
 // average of local strains); they are summed once into a constant matrix, and every step checks the bound.
+// The nonlocal bonds' elements are evaluated as SIMD rows (gamut_pair_kernels.hpp), the local bonds'
+// element by element; the single-precision factor is DenseCholesky (dense_cholesky.hpp).
 #include <array>
 #include <cstddef>
 #include <cstdint>
