@@ -122,10 +122,6 @@ GamutBarSolver::GamutBarSolver(const GamutBar& bar, double linearStrain)
   tangent_ = elastic_;
 }
 
-double GamutBarSolver::pairTangent(std::size_t j, std::uint8_t state) const {
-  return ((state & 1) ? kA_[j] : 0.0) + ((state & 2) ? kB_[j] : 0.0);
-}
-
 void GamutBarSolver::addPair(Eigen::MatrixXd& K, std::size_t j, double k) const {
   const std::size_t b = static_cast<std::size_t>(pairBond_[j]);
   addBond(K, bar_.bondUnknowns()[b], bar_.bondCoefficients()[b], k);
@@ -332,14 +328,7 @@ void GamutBarSolver::commit(double force) {
   }
   padded_.segment(1, n_) = u_;
   const double* u = padded_.data();
-  for (const gamut::PairRow& row : rows_)
-    for (std::size_t i = 0; i < row.count; ++i) {
-      const std::size_t j = row.first + i;
-      const double e = gamut::pairElongation(row, n_, u, i);
-      const double xA = e - offsetA_[j], xB = e - offsetB_[j];
-      if (std::abs(xA) > sA_[j]) offsetA_[j] = e - std::copysign(sA_[j], xA);
-      if (std::abs(xB) > sB_[j]) offsetB_[j] = e - std::copysign(sB_[j], xB);
-    }
+  gamut::pairCommit(rows_.data(), rows_.size(), sA_.data(), sB_.data(), offsetA_.data(), offsetB_.data(), n_, u);
   for (std::size_t b = 0; b < slot_.size(); ++b) {
     const auto& s = slot_[b];
     const auto& c = coef_[b];

@@ -71,7 +71,9 @@ class GamutBarSolver {
   void factorize();
   void useElasticTangent();
   // Tangent of pair j with the elastic bits `state`; K += k g g^T of pair j's bond.
-  double pairTangent(std::size_t j, std::uint8_t state) const;
+  double pairTangent(std::size_t j, std::uint8_t state) const {
+    return ((state & 1) ? kA_[j] : 0.0) + ((state & 2) ? kB_[j] : 0.0);
+  }
   void addPair(Eigen::MatrixXd& K, std::size_t j, double k) const;
   void addChangedPairs();  // the changes of the pairs' elastic bits into tangent_
   gamut::PairElements pairElements() const;

@@ -98,7 +98,36 @@ PairSums simd(const PairRow* rows, std::size_t rowCount, const PairElements& el,
   return sums;
 }
 
+PERISTEP_CLONES
+void commit(const PairRow* rows, std::size_t rowCount, const double* slipA, const double* slipB, double* offsetA,
+            double* offsetB, int last, const double* U) {
+  for (std::size_t w = 0; w < rowCount; ++w) {
+    const PairRow& pr = rows[w];
+    const double base = rowBase(pr, last, U), sign = rowSign(pr);
+    const double* __restrict u = U + pr.qBegin;
+    const double* __restrict sA = slipA + pr.first;
+    const double* __restrict sB = slipB + pr.first;
+    double* __restrict oA = offsetA + pr.first;
+    double* __restrict oB = offsetB + pr.first;
+    for (std::size_t i = 0; i < pr.count; i += kPairLanes) {
+      const Lanes e = base + sign * load(u + i);
+      const Lanes a = load(sA + i), b = load(sB + i), offA = load(oA + i), offB = load(oB + i);
+      const Lanes xA = e - offA, xB = e - offB;
+      const Lanes cA = xA > a ? a : (xA < -a ? -a : xA);
+      const Lanes cB = xB > b ? b : (xB < -b ? -b : xB);
+      // Slipping (the clamp moved x): the offset that puts the element at its cap, e - (+-s).
+      store(oA + i, cA == xA ? offA : e - cA);
+      store(oB + i, cB == xB ? offB : e - cB);
+    }
+  }
+}
+
 }  // namespace
+
+void pairCommit(const PairRow* rows, std::size_t rowCount, const double* sA, const double* sB, double* offsetA,
+                double* offsetB, int lastPoint, const double* U) {
+  commit(rows, rowCount, sA, sB, offsetA, offsetB, lastPoint, U);
+}
 
 PairSums pairResidual(const PairRow* rows, std::size_t rowCount, const PairElements& el, int lastPoint, const double* U,
                       double* R, std::uint8_t* state) {

@@ -57,6 +57,11 @@ PairSums pairResidual(const PairRow* rows, std::size_t rowCount, const PairEleme
 PairSums pairResidualReference(const PairRow* rows, std::size_t rowCount, const PairElements& el, int lastPoint,
                                const double* U, double* R, std::uint8_t* state);
 
+// The commit of a step: every element that slips at U keeps its slip, offset = e - (+-s), the others
+// keep their offsets. sA, sB, offsetA, offsetB as in PairElements.
+void pairCommit(const PairRow* rows, std::size_t rowCount, const double* sA, const double* sB, double* offsetA,
+                double* offsetB, int lastPoint, const double* U);
+
 // Elongation of bond i of a row.
 inline double pairElongation(const PairRow& row, int lastPoint, const double* U, std::size_t i) {
   const int q = row.qBegin + static_cast<int>(i);
