@@ -77,17 +77,28 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
   for (std::size_t p = 0; p < points; ++p) {
     partners.clear();
     double nearest = L;
-    for (std::size_t q = 0; q < points; ++q) {
-      // Nonlocal: two or more degrees of separation on the mirrored grid (..., 2~, 1~, 0, 1, ..., n, (n-1)^, ...).
-      if (q + 1 < p || q > p + 1) {
-        const double l = std::abs(x_[q] - x_[p]);
-        partners.emplace_back(l, Inside, q);
-        nearest = std::min(nearest, l);
-      }
-      if (q >= 1 && p + q >= 2) partners.emplace_back(x_[p] + x_[q], BeyondStart, q);
-      if (q + 1 <= n && 2 * n - p - q >= 2) partners.emplace_back(2 * L - x_[p] - x_[q], BeyondEnd, q);
-    }
-    std::sort(partners.begin(), partners.end());
+    // Nonlocal: two or more degrees of separation on the mirrored grid (..., 2~, 1~, 0, 1, ..., n, (n-1)^, ...).
+    // The partners in four runs, each already in increasing distance (the grid increases, and rounding
+    // keeps x_q - x_p, x_p + x_q and (2L - x_p) - x_q monotone in x_q), merged: the same order as sorting
+    // them all, since no two (distance, side, q) are equal.
+    auto inside = [&](std::size_t q) {
+      const double l = std::abs(x_[q] - x_[p]);
+      partners.emplace_back(l, Inside, q);
+      nearest = std::min(nearest, l);
+    };
+    for (std::size_t q = p >= 2 ? p - 1 : 0; q-- > 0;) inside(q);  // q = p - 2 .. 0
+    const std::size_t left = partners.size();
+    for (std::size_t q = p + 2; q < points; ++q) inside(q);
+    const std::size_t right = partners.size();
+    for (std::size_t q = 1; q < points; ++q)
+      if (p + q >= 2) partners.emplace_back(x_[p] + x_[q], BeyondStart, q);
+    const std::size_t start = partners.size();
+    for (std::size_t q = n; q-- > 0;)  // q = n - 1 .. 0
+      if (2 * n - p - q >= 2) partners.emplace_back(2 * L - x_[p] - x_[q], BeyondEnd, q);
+    const auto first = partners.begin();
+    std::inplace_merge(first, first + static_cast<std::ptrdiff_t>(left), first + static_cast<std::ptrdiff_t>(right));
+    std::inplace_merge(first + static_cast<std::ptrdiff_t>(right), first + static_cast<std::ptrdiff_t>(start), partners.end());
+    std::inplace_merge(first, first + static_cast<std::ptrdiff_t>(right), partners.end());
     distance.resize(partners.size());
     weight.resize(partners.size());
     for (std::size_t i = 0; i < partners.size(); ++i) distance[i] = std::get<0>(partners[i]);
