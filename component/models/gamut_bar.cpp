@@ -77,17 +77,28 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
   for (std::size_t p = 0; p < points; ++p) {
     partners.clear();
     double nearest = L;
-    for (std::size_t q = 0; q < points; ++q) {
-      // Nonlocal: two or more degrees of separation on the mirrored grid (..., 2~, 1~, 0, 1, ..., n, (n-1)^, ...).
-      if (q + 1 < p || q > p + 1) {
-        const double l = std::abs(x_[q] - x_[p]);
-        partners.emplace_back(l, Inside, q);
-        nearest = std::min(nearest, l);
-      }
-      if (q >= 1 && p + q >= 2) partners.emplace_back(x_[p] + x_[q], BeyondStart, q);
-      if (q + 1 <= n && 2 * n - p - q >= 2) partners.emplace_back(2 * L - x_[p] - x_[q], BeyondEnd, q);
-    }
-    std::sort(partners.begin(), partners.end());
+    // Nonlocal: two or more degrees of separation on the mirrored grid (..., 2~, 1~, 0, 1, ..., n, (n-1)^, ...).
+    // The partners in four runs, each already in increasing distance (the grid increases, and rounding
+    // keeps x_q - x_p, x_p + x_q and (2L - x_p) - x_q monotone in x_q), merged: the same order as sorting
+    // them all, since no two (distance, side, q) are equal.
+    auto inside = [&](std::size_t q) {
+      const double l = std::abs(x_[q] - x_[p]);
+      partners.emplace_back(l, Inside, q);
+      nearest = std::min(nearest, l);
+    };
+    for (std::size_t q = p >= 2 ? p - 1 : 0; q-- > 0;) inside(q);  // q = p - 2 .. 0
+    const std::size_t left = partners.size();
+    for (std::size_t q = p + 2; q < points; ++q) inside(q);
+    const std::size_t right = partners.size();
+    for (std::size_t q = 1; q < points; ++q)
+      if (p + q >= 2) partners.emplace_back(x_[p] + x_[q], BeyondStart, q);
+    const std::size_t start = partners.size();
+    for (std::size_t q = n; q-- > 0;)  // q = n - 1 .. 0
+      if (2 * n - p - q >= 2) partners.emplace_back(2 * L - x_[p] - x_[q], BeyondEnd, q);
+    const auto first = partners.begin();
+    std::inplace_merge(first, first + static_cast<std::ptrdiff_t>(left), first + static_cast<std::ptrdiff_t>(right));
+    std::inplace_merge(first + static_cast<std::ptrdiff_t>(right), first + static_cast<std::ptrdiff_t>(start), partners.end());
+    std::inplace_merge(first, first + static_cast<std::ptrdiff_t>(right), partners.end());
     distance.resize(partners.size());
     weight.resize(partners.size());
     for (std::size_t i = 0; i < partners.size(); ++i) distance[i] = std::get<0>(partners[i]);
@@ -129,7 +140,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
 
   // Bonds and their elements.
   firstElement_.push_back(0);
-  auto addBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l) {
+  auto addBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l, GamutBondPoints where) {
     std::array<int, 3> u{-1, -1, -1};
     std::array<double, 3> c{0, 0, 0};
     int terms = 0;
@@ -144,6 +155,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
     unknown_.push_back(u);
     coef_.push_back(c);
     length_.push_back(l);
+    points_.push_back(where);
     firstElement_.push_back(stiffness_.size());
   };
   auto addElement = [&](double k, double strain, double l) {
@@ -156,9 +168,10 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
     if (table.weight[at] >= spec.weightCutoff)
       addElement(table.weight[at] * softness[o] * A * modulus_[o] * cell[o] / (l * l), table.strain[at], l);
   };
-  auto closeBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l) {
+  auto closeBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l, GamutBondKind kind, std::size_t p,
+                       std::size_t q) {
     if (stiffness_.size() == firstElement_.back()) return false;
-    addBond(nodes, coefs, l);
+    addBond(nodes, coefs, l, {kind, static_cast<int>(p), static_cast<int>(q)});
     return true;
   };
   std::vector<CutCrossing> crossings;  // cuts j (between points j and j + 1) crossed by each bond
@@ -171,7 +184,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
       const double l = x_[q] - x_[p];
       addNonlocal(p, Inside, q, l);
       addNonlocal(q, Inside, p, l);
-      if (closeBond({static_cast<int>(q), static_cast<int>(p), -1}, {1, -1, 0}, l)) cross(p, q, 1);
+      if (closeBond({static_cast<int>(q), static_cast<int>(p), -1}, {1, -1, 0}, l, GamutBondKind::Inside, p, q)) cross(p, q, 1);
     }
   // Across x = 0: u(-x_q) = -u_q. The pair stands for the bonds p-q~ and q-p~ of the mirrored bar
   // (one bond, p~-p, when q = p), each crossing the cuts between x = 0 and its real end.
@@ -180,7 +193,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
       const double l = x_[p] + x_[q];
       addNonlocal(p, BeyondStart, q, l);
       if (q != p) addNonlocal(q, BeyondStart, p, l);
-      if (closeBond({static_cast<int>(p), static_cast<int>(q), -1}, {1, 1, 0}, l)) {
+      if (closeBond({static_cast<int>(p), static_cast<int>(q), -1}, {1, 1, 0}, l, GamutBondKind::AcrossStart, p, q)) {
         cross(0, p, q == p ? 2 : 1);
         if (q != p) cross(0, q, 1);
       }
@@ -190,7 +203,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
       const double l = 2 * L - x_[p] - x_[q];
       addNonlocal(p, BeyondEnd, q, l);
       if (q != p) addNonlocal(q, BeyondEnd, p, l);
-      if (closeBond({last, static_cast<int>(p), static_cast<int>(q)}, {2, -1, -1}, l)) {
+      if (closeBond({last, static_cast<int>(p), static_cast<int>(q)}, {2, -1, -1}, l, GamutBondKind::AcrossEnd, p, q)) {
         cross(p, n, q == p ? 2 : 1);
         if (q != p) cross(q, n, 1);
       }
@@ -210,7 +223,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
     const double l = x_[j + 1] - x_[j];
     for (std::size_t e = 0; e < bundle.stiffness.size(); ++e)
       if (bundle.stiffness[e] > 0) addElement(bundle.stiffness[e] / l, bundle.strain[e], l);
-    closeBond({static_cast<int>(j + 1), static_cast<int>(j), -1}, {1, -1, 0}, l);
+    closeBond({static_cast<int>(j + 1), static_cast<int>(j), -1}, {1, -1, 0}, l, GamutBondKind::Local, j, j + 1);
   }
 }
 

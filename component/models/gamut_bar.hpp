@@ -51,6 +51,15 @@ struct GamutBarSpec {
   std::uint64_t seed = 2023;
 };
 
+// Where a bond lies: between points p and q of the bar (q > p + 1), from p or q across x = 0 to the
+// mirror image of the other (q >= p), across x = L (q >= p, both < n), or the local bond of the cut
+// between p and q = p + 1.
+enum class GamutBondKind : std::uint8_t { Inside, AcrossStart, AcrossEnd, Local };
+struct GamutBondPoints {
+  GamutBondKind kind;
+  int p, q;
+};
+
 // One realization of the bar: the bonds as linear maps of the unknown displacements and their elements.
 class GamutBar {
  public:
@@ -68,6 +77,7 @@ class GamutBar {
   const std::vector<std::array<int, 3>>& bondUnknowns() const { return unknown_; }
   const std::vector<std::array<double, 3>>& bondCoefficients() const { return coef_; }
   const std::vector<double>& bondLength() const { return length_; }
+  const std::vector<GamutBondPoints>& bondPoints() const { return points_; }
   // Elements of bond b are firstElement[b] .. firstElement[b + 1] - 1.
   const std::vector<std::size_t>& firstElement() const { return firstElement_; }
   const std::vector<double>& elementStiffness() const { return stiffness_; }  // N/m
@@ -79,6 +89,7 @@ class GamutBar {
   std::vector<std::array<int, 3>> unknown_;
   std::vector<std::array<double, 3>> coef_;
   std::vector<double> length_;
+  std::vector<GamutBondPoints> points_;
   std::vector<std::size_t> firstElement_;
   std::vector<double> stiffness_, cap_;
 };
