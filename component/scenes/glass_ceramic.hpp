@@ -17,8 +17,10 @@ struct GlassCeramicSpec {
   std::uint64_t seed = 1;
   double preCrackLength = 100e-6;
   PhaseConstants phases{80e9, 133e9, 6.59, 86.35, 0.25};  // 000 Table 1
-  LinearSolverKind linearSolver = LinearSolverKind::Umfpack;
-  FactorizationReuse reuse = FactorizationReuse::StaleAsPreconditioner;
+  LinearSolverKind linearSolver = LinearSolverKind::Umfpack;  // the drivers other than CrackZone
+  // The production driver, also behind the FMU (it had stayed StaleAsPreconditioner there: 146 s instead of
+  // ~20 s per h = 8 um specimen through `peristep run`, bench/README.md "Issue 14, session 10").
+  FactorizationReuse reuse = FactorizationReuse::CrackZone;
   FactorPrecision zonePrecision = kZoneFactorPrecision;  // CrackZone's sparse factors
   // Crystal field R per point (collar included), e.g. the PCA expansion 000:(5.5); empty: the
   // microstructure generated from `seed`. E and G are affine in R; the crack shares count a point with
