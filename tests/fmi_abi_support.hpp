@@ -131,7 +131,8 @@ class Session {
     fmi3Boolean event = fmi3True, terminate = fmi3True, early = fmi3True;
     fmi3Float64 last = -1;
     const fmi3Status s = fmu.fmi3DoStep(instance, t, h, fmi3False, &event, &terminate, &early, &last);
-    if (s == fmi3OK && (event || terminate || early)) throw std::runtime_error("fmi3DoStep raised a flag");
+    if (s == fmi3OK && (event || early)) throw std::runtime_error("fmi3DoStep raised a flag");
+    testOver = s == fmi3OK && terminate;
     if (lastSuccessfulTime) *lastSuccessfulTime = last;
     return s;
   }
@@ -139,4 +140,5 @@ class Session {
   const Fmu& fmu;
   LogRecorder log;
   fmi3Instance instance;
+  bool testOver = false;  // the last fmi3DoStep set terminateSimulation (a fracture specimen has split)
 };

@@ -62,3 +62,32 @@ TEST_CASE("the glass-ceramic plate uses the phase constants that are set", "[abi
   CHECK(crackAt(80e9, 6.59) > 0);
   CHECK(crackAt(70e9, 16 * 6.59) == 0);
 }
+
+// 000 Sec. 5 ends a test when the crack has crossed the plate; the FMU says so with terminateSimulation
+// in the step where that happens, not earlier, and scenes that cannot split never say it.
+TEST_CASE("the glass-ceramic plate asks to terminate in the step its crack crosses the plate", "[abi][fracture]") {
+  Session s;
+  setUpCoarseScene(s, PERISTEP_SCENE_GLASS_CERAMIC);
+  REQUIRE(s.initialize(0, 60) == fmi3OK);
+  int stepsBefore = 0;
+  double crackBefore = 0;
+  for (int k = 1; k <= 60 && !s.testOver; ++k) {
+    crackBefore = s.getFloat64(PERISTEP_VR_CRACK_LENGTH).at(0);
+    REQUIRE(s.setFloat64(PERISTEP_VR_LOAD_DISPLACEMENT, {k * 0.01e-6}) == fmi3OK);
+    REQUIRE(s.step(k - 1, 1) == fmi3OK);
+    stepsBefore += !s.testOver;
+  }
+  REQUIRE(s.testOver);
+  CHECK(stepsBefore >= 10);  // pure glass breaks from about 0.15 um
+  // From the pre-crack's tip (100 um from the left edge) to the right edge of the 800 um plate, less one
+  // horizon (48 um): the least the crack can have grown; and it ran in the last step.
+  CHECK(s.getFloat64(PERISTEP_VR_CRACK_LENGTH).at(0) > 650e-6);
+  CHECK(s.getFloat64(PERISTEP_VR_CRACK_LENGTH).at(0) > crackBefore);
+
+  Session elastic;
+  setUpCoarseScene(elastic, PERISTEP_SCENE_SMOOTH);
+  REQUIRE(elastic.initialize(0, 2) == fmi3OK);
+  REQUIRE(elastic.step(0, 1) == fmi3OK);
+  REQUIRE(elastic.step(1, 1) == fmi3OK);
+  CHECK_FALSE(elastic.testOver);
+}

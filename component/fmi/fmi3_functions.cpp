@@ -490,6 +490,7 @@ fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoi
     *earlyReturn = fmi3False;
     *lastSuccessfulTime = currentCommunicationPoint;
     *lastSuccessfulTime = s.doStep(currentCommunicationPoint, communicationStepSize);
+    *terminateSimulation = s.testOver() ? fmi3True : fmi3False;
   });
 }
 

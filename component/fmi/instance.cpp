@@ -107,6 +107,7 @@ double Instance::doStep(double currentCommunicationPoint, double communicationSt
   if (logger_.eventsOn())
     logger_.event("step to t = " + number(time_) + " at loadFactor = " +
                   number(values_.scalar<double>(PERISTEP_VR_LOAD_FACTOR)) + " in " + number(watch.seconds()) + " s");
+  if (testOver()) logger_.event("the crack has crossed the specimen at t = " + number(time_) + ": terminateSimulation");
   return time_;
 }
 

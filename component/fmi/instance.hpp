@@ -38,6 +38,8 @@ class Instance {
   void exitInitializationMode();
   // Solves at the current input; returns the new time.
   double doStep(double currentCommunicationPoint, double communicationStepSize);
+  // The scene's test is over (a fracture specimen has split in two): fmi3DoStep's terminateSimulation.
+  bool testOver() const { return model_ && model_->separated(); }
   void terminate();
   // Back to Instantiated with every start value (FMU states stay valid).
   void reset();

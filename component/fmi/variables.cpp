@@ -142,7 +142,8 @@ std::vector<Variable> makeTable() {
       {.name = "loadDisplacement", .vr = PERISTEP_VR_LOAD_DISPLACEMENT, .type = T::Float64, .causality = C::Input,
        .variability = V::Continuous, .initial = I::Default,
        .description = "Opening U_D of the glass-ceramic plate: the top collar moves by +U_D, the bottom by -U_D; "
-                      "every step breaks bonds until equilibrium at its current value",
+                      "every step breaks bonds until equilibrium at its current value; the step in which the crack crosses "
+                      "the plate sets terminateSimulation (000 Sec. 5 ends the test there)",
        .unit = "m", .start = "0"},
 
       {.name = "ux", .vr = PERISTEP_VR_UX, .type = T::Float64, .causality = C::Output,

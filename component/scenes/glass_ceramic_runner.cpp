@@ -90,6 +90,7 @@ class GlassCeramicRunner final : public Runner {
   }
   double fractureEnergy() const override { return specimen_.energyReleaseRate() * specimen_.projectedCrackLength(); }
   double toughnessKIC() const override { return specimen_.toughnessKIC(); }
+  bool separated() const override { return specimen_.crackReachedRightEdge(); }
   std::vector<std::uint8_t> saveState() const override { return specimen_.saveState(); }
   void restoreState(std::span<const std::uint8_t> b) override { specimen_.restoreState(b); }
   std::vector<double> xiScales() const override {  // xi_k = sqrt(lambda_k) eta_k (random/microstructure_pca.hpp)

@@ -184,6 +184,7 @@ double SceneModel::crackLength() const { return impl_->runner->crackLength(); }
 double SceneModel::brokenBonds() const { return impl_->runner->brokenBonds(); }
 double SceneModel::fractureEnergy() const { return impl_->runner->fractureEnergy(); }
 double SceneModel::toughnessKIC() const { return impl_->runner->toughnessKIC(); }
+bool SceneModel::separated() const { return impl_->runner->separated(); }
 std::array<double, 2> SceneModel::gripReaction(Side side) const { return impl_->runner->gripReaction(side); }
 double SceneModel::strainEnergy() const { return impl_->runner->strainEnergy(); }
 double SceneModel::kineticEnergy() const { return impl_->runner->kineticEnergy(); }

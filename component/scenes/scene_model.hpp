@@ -150,6 +150,9 @@ class SceneModel {
   double brokenBonds() const;
   double fractureEnergy() const;
   double toughnessKIC() const;
+  // The crack has crossed the specimen: further load steps would only break what is left of the grips'
+  // ligaments, so the FMU asks the importer to stop (terminateSimulation).
+  bool separated() const;
   // Specimen scene: (x, y) force of a held grip's collar on the specimen [N/m]; 0 for a free one.
   std::array<double, 2> gripReaction(Side side) const;
   // Dynamic scenes (0 otherwise), per unit thickness: elastic energy PD(u) 001:(11), kinetic energy,

@@ -30,6 +30,8 @@ class Runner {
   virtual double fractureEnergy() const { return 0.0; }
   virtual double toughnessKIC() const { return 0.0; }
   virtual std::array<double, 2> gripReaction(Side) const { return {0.0, 0.0}; }  // specimen scene
+  // The test is over: the crack has crossed the specimen (000 Sec. 5 ends its test there).
+  virtual bool separated() const { return false; }
   // Scales of the standardized coordinates when they come from the field itself (PCA); empty: the
   // fixed parametrization xiScale(scene, k).
   virtual std::vector<double> xiScales() const { return {}; }
