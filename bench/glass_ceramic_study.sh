@@ -8,6 +8,8 @@
 #   bench/glass_ceramic_study.sh OUT_DIR [H_UM] [REALIZATIONS] [MC] [STEPS] [UD_MAX_M]
 #   e.g. bench/glass_ceramic_study.sh study 40 20000 100 250 1e-6   (the paper's loading: 4e-3 um steps to 1 um)
 #   PERISTEP=path/to/peristep PERISTEP_FMU=path/to/PeriStep.fmu to use other builds.
+#   LAUNCH="mpirun -n 2" to spread each study's samples over MPI ranks; FRACTIONS="0.2 0.4" for some
+#   fractions only (rows of other fractions already in OUT_DIR/toughness.csv are kept).
 #
 # Writes OUT_DIR/toughness.csv (f, method, samples, mean, std, wall s) and OUT_DIR/toughness.png.
 set -euo pipefail
@@ -20,6 +22,8 @@ ud_max=${6:-0.3e-6}
 here=$(cd "$(dirname "$0")/.." && pwd)
 peristep=${PERISTEP:-$here/build/host/peristep}
 fmu=(); [ -n "${PERISTEP_FMU:-}" ] && fmu=(--fmu "$PERISTEP_FMU")  # a copy, so a rebuild cannot change it mid-study
+read -r -a launch <<< "${LAUNCH:-}"
+fractions=${FRACTIONS:-0.2 0.4 0.6 0.8}
 mkdir -p "$out"
 cd "$out"
 
@@ -41,6 +45,7 @@ poissonRatio = 0.25
 crystalFraction = $2
 seed = 1
 pcaRealizations = $3
+setUpTimeLimit = 3600.0  # the PCA of 20,000 realizations takes minutes on fine grids
 nModes = $4
 xi = [$5]
 
@@ -55,13 +60,14 @@ TOML
 # Column of a CSV header by name.
 colnum() { head -1 "$1" | tr ',' '\n' | grep -nx "$2" | cut -d: -f1; }
 
-echo "f,method,samples,mean_KIC,std_KIC,wall_s" > toughness.csv
-for f in 0.2 0.4 0.6 0.8; do
+[ -f toughness.csv ] || echo "f,method,samples,mean_KIC,std_KIC,wall_s" > toughness.csv
+for f in $fractions; do
   tag=$(python3 -c "print(round(100 * $f))")
   scene "pca_f$tag.toml" "$f" "$realizations" 20 "$zeros"
   scene "mc_f$tag.toml" "$f" 0 1 "0.0"
-  "$peristep" sample "pca_f$tag.toml" --rule smolyak --level 1 --out "pca_f$tag.h5" "${fmu[@]}"
-  "$peristep" sample "mc_f$tag.toml" --rule mc --samples "$mc" --out "mc_f$tag.h5" "${fmu[@]}"
+  "${launch[@]}" "$peristep" sample "pca_f$tag.toml" --rule smolyak --level 1 --out "pca_f$tag.h5" "${fmu[@]}"
+  "${launch[@]}" "$peristep" sample "mc_f$tag.toml" --rule mc --samples "$mc" --out "mc_f$tag.h5" "${fmu[@]}"
+  sed -i "/^$f,/d" toughness.csv
   for method in pca mc; do
     csv="${method}_f$tag.csv"
     row=$(tail -1 "$csv")
@@ -69,6 +75,7 @@ for f in 0.2 0.4 0.6 0.8; do
     echo "$f,$method,$(get samples),$(get mean_toughnessKIC),$(get std_toughnessKIC),$(get seconds)" >> toughness.csv
   done
 done
+{ head -1 toughness.csv; tail -n +2 toughness.csv | sort -t, -k1,1 -k2,2; } > toughness.sorted && mv toughness.sorted toughness.csv
 column -t -s, toughness.csv
 
 if command -v gnuplot > /dev/null; then
