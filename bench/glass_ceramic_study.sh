@@ -9,9 +9,10 @@
 #   e.g. bench/glass_ceramic_study.sh study 40 20000 100 250 1e-6   (the paper's loading: 4e-3 um steps to 1 um)
 #   PERISTEP=path/to/peristep PERISTEP_FMU=path/to/PeriStep.fmu to use other builds.
 #   LAUNCH="mpirun -n 2" to spread each study's samples over MPI ranks; FRACTIONS="0.2 0.4" for some
-#   fractions only (rows of other fractions already in OUT_DIR/toughness.csv are kept).
+#   fractions only; TABLE_ONLY=1 to redraw the table and plot from OUT_DIR (every finished fraction).
 #
-# Writes OUT_DIR/toughness.csv (f, method, samples, mean, std, wall s) and OUT_DIR/toughness.png.
+# Writes OUT_DIR/toughness.csv (f, method, samples, mean, std (PCA: direct and PCE), MC standard error of the
+# mean, wall s, per-sample wall s: median, largest, sum) and OUT_DIR/toughness.png (PCA error bars: PCE std).
 set -euo pipefail
 out=${1:?usage: glass_ceramic_study.sh OUT_DIR [H_UM] [REALIZATIONS] [MC] [STEPS] [UD_MAX_M]}
 h_um=${2:-16}
@@ -57,25 +58,41 @@ steps = $steps
 TOML
 }
 
-# Column of a CSV header by name.
-colnum() { head -1 "$1" | tr ',' '\n' | grep -nx "$2" | cut -d: -f1; }
+# Column of a CSV header by name (empty when the CSV has none).
+colnum() { head -1 "$1" | tr ',' '\n' | { grep -nx "$2" || true; } | cut -d: -f1; }
 
-[ -f toughness.csv ] || echo "f,method,samples,mean_KIC,std_KIC,wall_s" > toughness.csv
+# Median, largest and sum of the per-sample wall times kept in a sample store (a double after the magic).
+sample_seconds() {
+  python3 - "$1" <<'PY'
+import glob, statistics, struct, sys
+t = [struct.unpack_from("<d", open(p, "rb").read(16), 8)[0] for p in glob.glob(sys.argv[1] + "/sample-*.bin")]
+print(f"{statistics.median(t):.1f},{max(t):.1f},{sum(t):.0f}")
+PY
+}
+
 for f in $fractions; do
+  [ -n "${TABLE_ONLY:-}" ] && break  # TABLE_ONLY=1: table and plot from what OUT_DIR holds, nothing run
   tag=$(python3 -c "print(round(100 * $f))")
   scene "pca_f$tag.toml" "$f" "$realizations" 20 "$zeros"
   scene "mc_f$tag.toml" "$f" 0 1 "0.0"
   "${launch[@]}" "$peristep" sample "pca_f$tag.toml" --rule smolyak --level 1 --out "pca_f$tag.h5" "${fmu[@]}"
   "${launch[@]}" "$peristep" sample "mc_f$tag.toml" --rule mc --samples "$mc" --out "mc_f$tag.h5" "${fmu[@]}"
-  sed -i "/^$f,/d" toughness.csv
+done
+
+# One row per fraction and method whose study has finished (its CSV exists), from earlier sittings too.
+echo "f,method,samples,mean_KIC,std_KIC,pce_std_KIC,se_mean_KIC,wall_s,sample_s_median,sample_s_max,sample_s_sum" \
+  > toughness.csv
+for tag in 20 40 60 80; do
   for method in pca mc; do
     csv="${method}_f$tag.csv"
+    [ -f "$csv" ] || continue
     row=$(tail -1 "$csv")
-    get() { echo "$row" | cut -d, -f"$(colnum "$csv" "$1")"; }
-    echo "$f,$method,$(get samples),$(get mean_toughnessKIC),$(get std_toughnessKIC),$(get seconds)" >> toughness.csv
+    get() { local c; c=$(colnum "$csv" "$1"); [ -n "$c" ] && echo "$row" | cut -d, -f"$c"; }
+    echo "0.$((tag / 10)),$method,$(get samples),$(get mean_toughnessKIC),$(get std_toughnessKIC)," \
+      "$(get pceStd_toughnessKIC),$(get seMean_toughnessKIC),$(get seconds),$(sample_seconds "${method}_f$tag.samples")" |
+      tr -d ' ' >> toughness.csv
   done
 done
-{ head -1 toughness.csv; tail -n +2 toughness.csv | sort -t, -k1,1 -k2,2; } > toughness.sorted && mv toughness.sorted toughness.csv
 column -t -s, toughness.csv
 
 if command -v gnuplot > /dev/null; then
@@ -88,8 +105,11 @@ set xlabel "crystal fraction f"
 set ylabel "K_IC [MPa m^0.5]"
 set title "Glass-ceramic toughness, h = $h_um um: mean +- one standard deviation"
 set xrange [0.1:0.9]
-plot "< grep ',pca,' toughness.csv" using (\$1-0.01):(\$4/1e6):(\$5/1e6) with yerrorlines title "PCA, Smolyak level 1 (41 samples)", \
-     "< grep ',mc,' toughness.csv" using (\$1+0.01):(\$4/1e6):(\$5/1e6) with yerrorlines title "Monte Carlo ($mc microstructures)"
+set yrange [0:4]
+plot "< grep ',pca,' toughness.csv" using (\$1-0.01):(\$4/1e6):(\$6/1e6) with yerrorlines title "PCA, Smolyak level 1 (41 samples)", \
+     "< grep ',mc,' toughness.csv" using (\$1+0.01):(\$4/1e6):(\$5/1e6) with yerrorlines title "Monte Carlo ($mc microstructures)", \
+     0.75 with lines dashtype 2 lc rgb "gray40" title "glass, 000 Table 1 (0.75)", \
+     3.5 with lines dashtype 3 lc rgb "gray40" title "crystal, 000 Table 1 (3.5)"
 GP
   echo "wrote $out/toughness.csv and $out/toughness.png"
 fi
