@@ -10,6 +10,8 @@
 #   PERISTEP=path/to/peristep PERISTEP_FMU=path/to/PeriStep.fmu to use other builds.
 #   LAUNCH="mpirun -n 2" to spread each study's samples over MPI ranks; FRACTIONS="0.2 0.4" for some
 #   fractions only; TABLE_ONLY=1 to redraw the table and plot from OUT_DIR (every finished fraction).
+#   A study longer than one sitting resumes from the sample stores in OUT_DIR; on another machine, put the
+#   finished rows in OUT_DIR/toughness.csv (e.g. a copy of bench/results/glass_ceramic_toughness_h8.csv).
 #
 # Writes OUT_DIR/toughness.csv (f, method, samples, mean, std (PCA: direct and PCE), MC standard error of the
 # mean, wall s, per-sample wall s: median, largest, sum) and OUT_DIR/toughness.png (PCA error bars: PCE std).
@@ -79,13 +81,19 @@ for f in $fractions; do
   "${launch[@]}" "$peristep" sample "mc_f$tag.toml" --rule mc --samples "$mc" --out "mc_f$tag.h5" "${fmu[@]}"
 done
 
-# One row per fraction and method whose study has finished (its CSV exists), from earlier sittings too.
+# One row per fraction and method whose study has finished (its CSV exists); a row of the previous
+# toughness.csv is kept for a study that OUT_DIR no longer holds (a sitting on another machine).
+touch toughness.csv
+mv toughness.csv toughness.previous
 echo "f,method,samples,mean_KIC,std_KIC,pce_std_KIC,se_mean_KIC,wall_s,sample_s_median,sample_s_max,sample_s_sum" \
   > toughness.csv
 for tag in 20 40 60 80; do
   for method in pca mc; do
     csv="${method}_f$tag.csv"
-    [ -f "$csv" ] || continue
+    if [ ! -f "$csv" ]; then
+      grep "^0.$((tag / 10)),$method," toughness.previous >> toughness.csv || true
+      continue
+    fi
     row=$(tail -1 "$csv")
     get() { local c; c=$(colnum "$csv" "$1"); [ -n "$c" ] && echo "$row" | cut -d, -f"$c"; }
     echo "0.$((tag / 10)),$method,$(get samples),$(get mean_toughnessKIC),$(get std_toughnessKIC)," \
@@ -93,6 +101,7 @@ for tag in 20 40 60 80; do
       tr -d ' ' >> toughness.csv
   done
 done
+rm toughness.previous
 column -t -s, toughness.csv
 
 if command -v gnuplot > /dev/null; then
