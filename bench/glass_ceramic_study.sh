@@ -114,7 +114,7 @@ set xlabel "crystal fraction f"
 set ylabel "K_IC [MPa m^0.5]"
 set title "Glass-ceramic toughness, h = $h_um um: mean +- one standard deviation"
 set xrange [0.1:0.9]
-set yrange [0:4]
+set yrange [0:4.5]
 plot "< grep ',pca,' toughness.csv" using (\$1-0.01):(\$4/1e6):(\$6/1e6) with yerrorlines title "PCA, Smolyak level 1 (41 samples)", \
      "< grep ',mc,' toughness.csv" using (\$1+0.01):(\$4/1e6):(\$5/1e6) with yerrorlines title "Monte Carlo ($mc microstructures)", \
      0.75 with lines dashtype 2 lc rgb "gray40" title "glass, 000 Table 1 (0.75)", \
