@@ -108,6 +108,7 @@ enum PeriStepValueReference {
   PERISTEP_VR_GRIP_BOTTOM_UY = 96,
   PERISTEP_VR_GRIP_TOP_UX = 97,
   PERISTEP_VR_GRIP_TOP_UY = 98,
+  PERISTEP_VR_SPECIMEN_MODEL = 99,           /* Enumeration: enum PeriStepSpecimenModel */
   PERISTEP_VR_REACTION_LEFT_X = 100,         /* Float64, N/m: force of each held grip on the specimen */
   PERISTEP_VR_REACTION_LEFT_Y = 101,
   PERISTEP_VR_REACTION_RIGHT_X = 102,
@@ -116,6 +117,14 @@ enum PeriStepValueReference {
   PERISTEP_VR_REACTION_BOTTOM_Y = 105,
   PERISTEP_VR_REACTION_TOP_X = 106,
   PERISTEP_VR_REACTION_TOP_Y = 107,
+  PERISTEP_VR_GRIP_LEFT_VX = 130,            /* Float64, m/s: velocity of a held grip at loadFactor 1 (dynamic) */
+  PERISTEP_VR_GRIP_LEFT_VY = 131,
+  PERISTEP_VR_GRIP_RIGHT_VX = 132,
+  PERISTEP_VR_GRIP_RIGHT_VY = 133,
+  PERISTEP_VR_GRIP_BOTTOM_VX = 134,
+  PERISTEP_VR_GRIP_BOTTOM_VY = 135,
+  PERISTEP_VR_GRIP_TOP_VX = 136,
+  PERISTEP_VR_GRIP_TOP_VY = 137,
 
   /* the 1D deformation-gamut bar of paper 002 (PERISTEP_SCENE_GAMUT_BAR); seed picks the realization */
   PERISTEP_VR_GAMUT_MATERIAL = 110,      /* Enumeration: enum PeriStepGamutMaterial */
@@ -168,10 +177,17 @@ enum PeriStepMaterialField {
   PERISTEP_MATERIAL_KL_FIELD = 2 /* Young's modulus map times the KL factor of xi (as the KL plate's E0 = 1) */
 };
 
+/* Values of the enumeration PeriStep.SpecimenModel (variable "specimenModel", specimen scene) */
+enum PeriStepSpecimenModel {
+  PERISTEP_SPECIMEN_QUASI_STATIC = 1, /* LPS, brittle bonds, equilibrium at every load (Fan et al.) */
+  PERISTEP_SPECIMEN_DYNAMIC = 2       /* state-based model in time, grips at prescribed velocities (Jha-Lipton) */
+};
+
 /* Values of the enumeration PeriStep.Grip (variables "gripLeft" ... "gripTop", specimen scene) */
 enum PeriStepGrip {
   PERISTEP_GRIP_FREE = 1, /* traction-free side */
-  PERISTEP_GRIP_HELD = 2  /* the collar beside the side moves rigidly by loadFactor * (gripUx, gripUy) */
+  PERISTEP_GRIP_HELD = 2  /* the collar beside the side moves rigidly: by loadFactor * (gripUx, gripUy),
+                             or at loadFactor * (gripVx, gripVy) in the dynamic model */
 };
 
 /* Values of the enumeration PeriStep.LinearSolver (variable "linearSolver") */

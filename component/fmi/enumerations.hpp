@@ -71,14 +71,20 @@ inline constexpr std::array<Option<SceneId>, 10> kSceneOptions{{
     {SceneId::Specimen, "specimen",
      "The importer's specimen: plate Lx x Ly on the vertex grid, material maps materialYoungsModulus, "
      "materialPoissonRatio, materialFractureEnergy, pre-cracks crackX0..crackY1, grips gripLeft..gripTop "
-     "moved by loadFactor; quasi-static brittle fracture (000 Sec. 3.3), every step breaks bonds until "
-     "equilibrium at its load"},
+     "moved by loadFactor; specimenModel quasiStatic: brittle fracture (000 Sec. 3.3), every step breaks "
+     "bonds until equilibrium at its load; dynamic: the state-based model of 001 over each communication "
+     "step, the held grips moving at loadFactor * (gripVx, gripVy)"},
     {SceneId::GamutBar, "gamutBar",
      "1D stochastic deformation-gamut bar (Desai, paper 002 Sec. 4): realization seed of gamutBonds bonds, "
      "gamutMaterial, gamutGrid, scatter of 002:(26); fixed at x = 0, pulled at x = L. gamutProtocol "
      "monotonic: every step moves the end stress to loadFactor * sigma_f; cyclic: every step of any size "
      "takes the next of the protocol's 53 force steps, and cyclicExponent, cyclicCoefficient hold n', K' "
      "after the 53rd; quasi-static, no image outputs"},
+}};
+
+inline constexpr std::array<EnumerationValue<SpecimenModel>, 2> kSpecimenModelValues{{
+    {PERISTEP_SPECIMEN_QUASI_STATIC, SpecimenModel::QuasiStatic},
+    {PERISTEP_SPECIMEN_DYNAMIC, SpecimenModel::Dynamic},
 }};
 
 inline constexpr std::array<EnumerationValue<LinearSolverKind>, 4> kLinearSolverValues{{

@@ -49,17 +49,23 @@ SpecimenSpec specimen(const ParameterValues& v) {
   const auto x1 = v.get<double>(PERISTEP_VR_CRACK_X1), y1 = v.get<double>(PERISTEP_VR_CRACK_Y1);
   for (std::size_t k = 0; k < x0.size(); ++k) s.cracks.push_back({x0[k], y0[k], x1[k], y1[k]});
   s.randomField = v.scalar<std::int64_t>(PERISTEP_VR_MATERIAL_FIELD) == PERISTEP_MATERIAL_KL_FIELD;
-  // Per side: the grip's enumeration and its displacement (x, y) at loadFactor 1.
-  const fmi3ValueReference grips[4][3] = {
-      {PERISTEP_VR_GRIP_LEFT, PERISTEP_VR_GRIP_LEFT_UX, PERISTEP_VR_GRIP_LEFT_UY},
-      {PERISTEP_VR_GRIP_RIGHT, PERISTEP_VR_GRIP_RIGHT_UX, PERISTEP_VR_GRIP_RIGHT_UY},
-      {PERISTEP_VR_GRIP_BOTTOM, PERISTEP_VR_GRIP_BOTTOM_UX, PERISTEP_VR_GRIP_BOTTOM_UY},
-      {PERISTEP_VR_GRIP_TOP, PERISTEP_VR_GRIP_TOP_UX, PERISTEP_VR_GRIP_TOP_UY}};
+  s.model = kindOf(kSpecimenModelValues, v.scalar<std::int64_t>(PERISTEP_VR_SPECIMEN_MODEL), "specimen model");
+  // Per side: the grip's enumeration, its displacement (x, y) and its velocity (x, y) at loadFactor 1.
+  const fmi3ValueReference grips[4][5] = {
+      {PERISTEP_VR_GRIP_LEFT, PERISTEP_VR_GRIP_LEFT_UX, PERISTEP_VR_GRIP_LEFT_UY, PERISTEP_VR_GRIP_LEFT_VX,
+       PERISTEP_VR_GRIP_LEFT_VY},
+      {PERISTEP_VR_GRIP_RIGHT, PERISTEP_VR_GRIP_RIGHT_UX, PERISTEP_VR_GRIP_RIGHT_UY, PERISTEP_VR_GRIP_RIGHT_VX,
+       PERISTEP_VR_GRIP_RIGHT_VY},
+      {PERISTEP_VR_GRIP_BOTTOM, PERISTEP_VR_GRIP_BOTTOM_UX, PERISTEP_VR_GRIP_BOTTOM_UY, PERISTEP_VR_GRIP_BOTTOM_VX,
+       PERISTEP_VR_GRIP_BOTTOM_VY},
+      {PERISTEP_VR_GRIP_TOP, PERISTEP_VR_GRIP_TOP_UX, PERISTEP_VR_GRIP_TOP_UY, PERISTEP_VR_GRIP_TOP_VX,
+       PERISTEP_VR_GRIP_TOP_VY}};
   for (std::size_t k = 0; k < 4; ++k) {
     const std::int64_t grip = v.scalar<std::int64_t>(grips[k][0]);
     if (grip != PERISTEP_GRIP_FREE && grip != PERISTEP_GRIP_HELD)
       throw InvalidInput("unknown grip " + std::to_string(grip));
-    s.grips[k] = {grip == PERISTEP_GRIP_HELD, v.scalar<double>(grips[k][1]), v.scalar<double>(grips[k][2])};
+    s.grips[k] = {grip == PERISTEP_GRIP_HELD, v.scalar<double>(grips[k][1]), v.scalar<double>(grips[k][2]),
+                  v.scalar<double>(grips[k][3]), v.scalar<double>(grips[k][4])};
   }
   return s;
 }

@@ -34,7 +34,8 @@ std::vector<Variable> makeTable() {
       {.name = "time", .vr = PERISTEP_VR_TIME, .type = T::Float64, .causality = C::Independent,
        .variability = V::Continuous, .initial = I::Default,
        .description = "Simulation time: each communication step is one quasi-static load increment; in the dynamic "
-                      "scenes (5-7) physical time, integrated over each communication step",
+                      "scenes (5-7, and the specimen's dynamic model) physical time, integrated over each "
+                      "communication step",
        .unit = "s"},
 
       {.name = "nx", .vr = PERISTEP_VR_NX, .type = T::UInt64, .causality = C::StructuralParameter,
@@ -136,7 +137,8 @@ std::vector<Variable> makeTable() {
        .variability = V::Continuous, .initial = I::Default,
        .description = "Scale of the body force and boundary data (scenes smooth, composite, interfaceCrack); every "
                       "step solves at its current value. Dynamic scenes: scale of the loads during the step (pull "
-                      "velocity 1 m/s, bending force rate f_max at 1). gamutBar, monotonic protocol: end stress over "
+                      "velocity 1 m/s, bending force rate f_max at 1). Specimen: the held grips' displacement (quasi-static) or "
+                      "velocity (dynamic) over its value at 1. gamutBar, monotonic protocol: end stress over "
                       "the material's sigma_f (every step pulls the bar to loadFactor * sigma_f * A)",
        .start = "1"},
       {.name = "loadDisplacement", .vr = PERISTEP_VR_LOAD_DISPLACEMENT, .type = T::Float64, .causality = C::Input,
@@ -402,6 +404,50 @@ std::vector<Variable> makeTable() {
        .description = "Specimen scene: y-displacement of the held top grip at loadFactor 1 (every step "
                       "moves it to loadFactor times this)",
        .unit = "m", .start = "1e-6"},
+      {.name = "specimenModel", .vr = PERISTEP_VR_SPECIMEN_MODEL, .type = T::Enumeration,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: quasi-static LPS fracture (000) or the dynamic state-based model (001)",
+       .declaredType = "PeriStep.SpecimenModel", .start = "1"},
+      {.name = "gripLeftVx", .vr = PERISTEP_VR_GRIP_LEFT_VX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: x-velocity of the held left grip at loadFactor 1 (each "
+                      "step moves it at loadFactor times this)",
+       .unit = "m/s", .start = "0"},
+      {.name = "gripLeftVy", .vr = PERISTEP_VR_GRIP_LEFT_VY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: y-velocity of the held left grip at loadFactor 1 (each "
+                      "step moves it at loadFactor times this)",
+       .unit = "m/s", .start = "0"},
+      {.name = "gripRightVx", .vr = PERISTEP_VR_GRIP_RIGHT_VX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: x-velocity of the held right grip at loadFactor 1 (each "
+                      "step moves it at loadFactor times this)",
+       .unit = "m/s", .start = "0"},
+      {.name = "gripRightVy", .vr = PERISTEP_VR_GRIP_RIGHT_VY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: y-velocity of the held right grip at loadFactor 1 (each "
+                      "step moves it at loadFactor times this)",
+       .unit = "m/s", .start = "0"},
+      {.name = "gripBottomVx", .vr = PERISTEP_VR_GRIP_BOTTOM_VX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: x-velocity of the held bottom grip at loadFactor 1 (each "
+                      "step moves it at loadFactor times this)",
+       .unit = "m/s", .start = "0"},
+      {.name = "gripBottomVy", .vr = PERISTEP_VR_GRIP_BOTTOM_VY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: y-velocity of the held bottom grip at loadFactor 1 (each "
+                      "step moves it at loadFactor times this)",
+       .unit = "m/s", .start = "0"},
+      {.name = "gripTopVx", .vr = PERISTEP_VR_GRIP_TOP_VX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: x-velocity of the held top grip at loadFactor 1 (each "
+                      "step moves it at loadFactor times this)",
+       .unit = "m/s", .start = "0"},
+      {.name = "gripTopVy", .vr = PERISTEP_VR_GRIP_TOP_VY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: y-velocity of the held top grip at loadFactor 1 (each "
+                      "step moves it at loadFactor times this)",
+       .unit = "m/s", .start = "0"},
 
       // The papers' material constants; a scene reads only its own.
       {.name = "glassYoungsModulus", .vr = PERISTEP_VR_GLASS_YOUNGS_MODULUS, .type = T::Float64,
@@ -516,10 +562,14 @@ const std::vector<EnumerationType>& enumerationTypes() {
         {"cyclic", PERISTEP_GAMUT_CYCLIC,
          "Fully reversed stress-controlled cycles at 6 amplitudes from sigma_y to sigma_f, 4 steps per half "
          "cycle (53 steps, the input unused); then n' and K'"}}},
+      {"PeriStep.SpecimenModel", "Models of the specimen scene",
+       enumerationItems(kSpecimenModelValues, kSpecimenModelOptions)},
       {"PeriStep.Grip",
        "How a side of the specimen is loaded",
        {{"free", PERISTEP_GRIP_FREE, "Traction-free: no collar beside the side"},
-        {"held", PERISTEP_GRIP_HELD, "The collar beside the side moves rigidly by loadFactor * (gripUx, gripUy)"}}},
+        {"held", PERISTEP_GRIP_HELD,
+         "The collar beside the side moves rigidly: by loadFactor * (gripUx, gripUy), or at loadFactor * (gripVx, "
+         "gripVy) in the dynamic model"}}},
       {"PeriStep.LinearSolver", "Sparse solvers of the (u, theta) system",
        enumerationItems(kLinearSolverValues, kLinearSolverOptions)},
       {"PeriStep.Covariance", "Covariance kernels of the KL field",
@@ -542,7 +592,7 @@ const std::vector<UnitDefinition>& unitDefinitions() {
   // N/m = kg s^-2 and J/m = kg m s^-2 (per unit thickness of the plane-strain body), J/m2 = kg s^-2 (energy
   // per crack area); K_IC's Pa m^(1/2) = kg m^(-1/2) s^-2 has no integer powers.
   static const std::vector<UnitDefinition> units{
-      {.name = "s", .s = 1}, {.name = "m", .m = 1}, {.name = "N/m", .kg = 1, .s = -2},
+      {.name = "s", .s = 1}, {.name = "m", .m = 1}, {.name = "m/s", .m = 1, .s = -1}, {.name = "N/m", .kg = 1, .s = -2},
       {.name = "Pa", .kg = 1, .m = -1, .s = -2},
       {.name = "J/m", .kg = 1, .m = 1, .s = -2}, {.name = "J/m2", .kg = 1, .s = -2},
       {.name = "kg/m3", .kg = 1, .m = -3}, {.name = "Pa.m^0.5", .integerPowers = false}};

@@ -68,9 +68,12 @@ StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBo
   b.direction.reserve(nb.bonds());
   for (auto* v : {&b.w, &b.ws}) v->reserve(nb.bonds());
   DirectionTable directions(b), cutDirections(b.preCrack);
+  // Void points (a specimen's holes) carry no bonds: they stay where they are and exert nothing.
+  const auto isVoid = [&](std::size_t p) { return !cloud.region.empty() && cloud.isVoid(p); };
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t k = nb.begin(i); k < nb.end(i); ++k) {
+    for (std::size_t k = nb.begin(i); k < nb.end(i) && !isVoid(i); ++k) {
       const std::uint32_t j = nb.index[k];
+      if (isVoid(j)) continue;
       const double dx = cloud.x[j] - cloud.x[i], dy = cloud.y[j] - cloud.y[i];
       const double L = std::hypot(dx, dy);
       const double J = influenceJ(L / eps);

@@ -54,7 +54,8 @@ struct StateBasedBonds : BondList {
   std::size_t points() const { return offset.size() - 1; }
 };
 
-// The cloud must be a lattice of spacing cloud.h (the cell of each node is the h x h square around it).
+// The cloud must be a lattice of spacing cloud.h (the cell of each node is the h x h square around it);
+// its Void points get no bonds.
 // Throws InvalidInput for a horizon below h or per-point arrays of the wrong size or range.
 StateBasedBonds buildStateBasedBonds(const PointCloud& cloud, const StateBasedBondOptions& options);
 

@@ -9,6 +9,7 @@
 //     Lx = 0.1 m, eps = 8, 4, 2 mm, h = eps/2, eps/4, eps/8 (e.g. nx = 50, deltaOverH = 4: eps = 8 mm).
 //   6, 7 bending (001 Sec. 6.2): D = [0, Lx] x [0, Ly]; pre-cracks, supports and load band sit where
 //     bending_test.hpp puts them on the 0.25 x 0.05 m beam, scaled by Lx/0.25 in x and Ly/0.05 in y.
+//   9 specimen with the dynamic model: its own vertex grid and grips (scenes/dynamic_specimen.cpp).
 // loadFactor scales the loads from each communication point on: the pull velocity of the Plexiglass
 // strips (1 m/s at loadFactor 1) and the bending body force f_max t. The material is that of 001 Table 1
 // from poissonRatio (0.25 in the paper), bulkModulus, criticalEnergyReleaseRate and density.
@@ -38,16 +39,9 @@ constexpr double kBeamLength = 0.25, kBeamDepth = 0.05;  // the beam bending_tes
 
 double spacing(const SceneParameters& p) { return p.grid.Lx / static_cast<double>(p.grid.nx); }
 
-StateBasedInput material(const SceneParameters& p) {
-  StateBasedInput in;
-  in.bulkModulus = p.bulkModulus;
-  in.poissonRatio = p.poissonRatio;
-  in.fractureEnergy = p.criticalEnergyReleaseRate;
-  in.density = p.density;
-  return in;
-}
-
 DynamicScene makeScene(const SceneParameters& p) {
+  if (p.scene == SceneId::Specimen) return makeDynamicSpecimen(p);
+  const StateBasedInput material = dynamicMaterial(p);
   const double h = spacing(p), eps = p.grid.deltaOverH * h;
   if (p.scene == SceneId::PlexiglassCrack) {
     PlexiglassCrackSpec s;
@@ -55,7 +49,7 @@ DynamicScene makeScene(const SceneParameters& p) {
     s.meshRatio = p.grid.deltaOverH;
     s.side = p.grid.Lx;
     s.crackLength = p.grid.Lx / 5;
-    s.material = material(p);
+    s.material = material;
     return makePlexiglassCrack(s);
   }
   BendingSpec s;
@@ -71,16 +65,17 @@ DynamicScene makeScene(const SceneParameters& p) {
   s.supportCentre *= sx;
   s.supportHalfWidth *= sx;
   s.loadHalfWidth *= sx;
-  s.material = material(p);
+  s.material = material;
   return makeBendingTest(s);
 }
 
 // The material nodes (D, collars excluded) as the cloud whose domain the outputs are written on;
-// lattice nodes are numbered row by row, so D's nodes in lattice order are an [ny][nx] image.
+// lattice nodes are numbered row by row, so D's nodes in lattice order are an [ny][nx] image. A specimen
+// names its image points itself (Void ones read 0: they carry no bonds and never move).
 PointCloud outputCloud(const DynamicScene& scene) {
   PointCloud c = scene.cloud;
-  c.domain.clear();
-  for (std::size_t p = 0; p < c.size(); ++p)
+  c.domain = scene.outputPoints;
+  for (std::size_t p = 0; scene.outputPoints.empty() && p < c.size(); ++p)
     if (scene.material[p]) c.domain.push_back(p);
   return c;
 }
@@ -116,7 +111,7 @@ class DynamicRunner final : public Runner {
       throw InvalidInput("internalTimeStep = " + text(o.timeStep) + " s (0: the scene's step) on this lattice (h = " +
                          text(scene_.h()) + " m, horizon " + text(scene_.horizon()) + " m): " + e.what());
     }
-    record_ = diagnostics_.measure(*integrator_);
+    measure();
   }
 
   const PointCloud& cloud() const override { return output_; }
@@ -141,7 +136,22 @@ class DynamicRunner final : public Runner {
       integrator_->setState(t, u.data(), v.data(), integrator_->externalWork());
     }
     if (in.stepSize > 0) advanceBy(in.stepSize, steps);
+    measure();
+  }
+
+  void measure() {
     record_ = diagnostics_.measure(*integrator_);
+    if (std::all_of(scene_.grips.begin(), scene_.grips.end(), [](const auto& g) { return g.empty(); })) return;
+    // A grip's force on the specimen is minus the specimen's on the collar: the internal forces among the
+    // collar's own points cancel pairwise.
+    std::vector<double> f(scene_.problem->dofs());
+    scene_.model->force(integrator_->displacement(), f.data());
+    const double V = scene_.model->pointVolume(0);
+    for (std::size_t k = 0; k < 4; ++k) {
+      reactions_[k] = {0.0, 0.0};
+      for (std::size_t q : scene_.grips[k])
+        for (std::size_t d = 0; d < 2; ++d) reactions_[k][d] -= f[2 * q + d] * V;
+    }
   }
 
   // Central difference: whole steps plus one landing on the end (solvers/central_difference.cpp).
@@ -170,8 +180,10 @@ class DynamicRunner final : public Runner {
   std::vector<double> ux() const override { return onMaterial(output_, integrator_->displacement(), 2, 0); }
   std::vector<double> uy() const override { return onMaterial(output_, integrator_->displacement(), 2, 1); }
   std::vector<double> youngsModulus() const override {
+    if (!scene_.youngsModulus.empty()) return onMaterial(output_, scene_.youngsModulus.data(), 1, 0);
     return std::vector<double>(output_.domain.size(), youngsModulus_);
   }
+  std::array<double, 2> gripReaction(Side side) const override { return reactions_[static_cast<std::size_t>(side)]; }
   // Z of 001:(104) (> 1 where the bond strain has passed the softening point).
   std::vector<double> damage() const override { return onMaterial(output_, diagnostics_.damage().data(), 1, 0); }
   double crackLength() const override { return record_.crackLength; }
@@ -209,7 +221,7 @@ class DynamicRunner final : public Runner {
     r.expectEnd();
     scene_.problem->setLoadPath(path);
     integrator_->setState(t, u.data(), v.data(), work);
-    record_ = diagnostics_.measure(*integrator_);
+    measure();
   }
 
  private:
@@ -225,13 +237,26 @@ class DynamicRunner final : public Runner {
   double timeStep_ = 0;
   std::unique_ptr<TimeIntegrator> integrator_;
   EnergyRecord record_;
+  std::array<std::array<double, 2>, 4> reactions_{};  // of the specimen's grips, by Side
 };
 
 }  // namespace
 
+StateBasedInput dynamicMaterial(const SceneParameters& p) {
+  StateBasedInput in;
+  in.bulkModulus = p.bulkModulus;
+  in.poissonRatio = p.poissonRatio;
+  in.fractureEnergy = p.criticalEnergyReleaseRate;
+  in.density = p.density;
+  return in;
+}
+
 void validateDynamicScene(const SceneParameters& p) {
   const GridSpec& g = p.grid;
-  validate(g, GridLayout::CellCentred);
+  if (p.scene == SceneId::Specimen)
+    validate(p.specimen, g);  // the specimen's vertex grid, the same for both of its models
+  else
+    validate(g, GridLayout::CellCentred);
   require(g.jitter == 0, "the dynamic scenes need a lattice: jitter must be 0 (got " + std::to_string(g.jitter) + ")");
   if (p.scene == SceneId::PlexiglassCrack) {
     require(g.nx == g.ny, "the Plexiglass crack is a square: nx must equal ny (got nx = " + std::to_string(g.nx) +

@@ -126,7 +126,7 @@ Part gamutBar(const SceneParameters& p) {
 
 CostEstimate estimateSetUp(const SceneParameters& p) {
   std::vector<Part> parts;
-  if (isDynamic(p.scene)) {
+  if (isDynamic(p)) {
     parts.push_back(dynamicSetUp(p.grid));
   } else if (p.scene == SceneId::GamutBar) {
     parts.push_back(gamutBar(p));

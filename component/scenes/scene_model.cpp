@@ -28,9 +28,10 @@ std::size_t randomCoordinates(const SceneParameters& p) {
   return 0;
 }
 
-bool isDynamic(SceneId scene) {
-  return scene == SceneId::PlexiglassCrack || scene == SceneId::BendingOneNotch ||
-         scene == SceneId::BendingTwoNotches;
+bool isDynamic(const SceneParameters& p) {
+  return p.scene == SceneId::PlexiglassCrack || p.scene == SceneId::BendingOneNotch ||
+         p.scene == SceneId::BendingTwoNotches ||
+         (p.scene == SceneId::Specimen && p.specimen.model == SpecimenModel::Dynamic);
 }
 
 bool usesKlField(const SceneParameters& p) {
@@ -47,10 +48,10 @@ double xiScale(SceneId scene, std::size_t) { return scene == SceneId::Smooth ? 0
 void validate(const SceneParameters& p) {
   require(p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack ||
               p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || p.scene == SceneId::Specimen ||
-              p.scene == SceneId::GamutBar || isDynamic(p.scene),
+              p.scene == SceneId::GamutBar || isDynamic(p),
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
-  if (isDynamic(p.scene))
-    validateDynamicScene(p);  // cell-centred lattices: h = Lx/nx, not Lx/(nx-1)
+  if (isDynamic(p))
+    validateDynamicScene(p);  // scenes 5-7: cell-centred lattices, h = Lx/nx, not Lx/(nx-1)
   else if (p.scene == SceneId::Specimen)
     validate(p.specimen, p.grid);
   else if (p.scene != SceneId::GamutBar)  // the bar is not on the plate grid (GamutBar checks its spec)
@@ -109,7 +110,7 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
     case SceneId::InterfaceCrack: return makeInterfaceCrackRunner(p);
     case SceneId::GlassCeramic: return makeGlassCeramicRunner(p);
     case SceneId::KlPlate: return makeKlPlateRunner(p);
-    case SceneId::Specimen: return makeSpecimenRunner(p);
+    case SceneId::Specimen: return isDynamic(p) ? makeDynamicRunner(p) : makeSpecimenRunner(p);
     case SceneId::GamutBar: return makeGamutBarRunner(p);
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:

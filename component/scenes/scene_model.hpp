@@ -80,8 +80,9 @@ struct SceneParameters {
   ProgressHook progress;            // optional: told how far long set-ups and steps have come
 };
 
-// Scenes 5-7 integrate the equation of motion in time; the others are quasi-static.
-bool isDynamic(SceneId scene);
+// Scenes 5-7 and a specimen with the dynamic model integrate the equation of motion in time; the others
+// are quasi-static.
+bool isDynamic(const SceneParameters& p);
 // The KL plate and a specimen with a random field draw a Karhunen-Loeve field from xi.
 bool usesKlField(const SceneParameters& p);
 

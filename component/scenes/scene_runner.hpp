@@ -55,7 +55,7 @@ std::unique_ptr<Runner> makeElasticRunner(const SceneParameters& p);         // 
 std::unique_ptr<Runner> makeInterfaceCrackRunner(const SceneParameters& p);  // Test 3
 std::unique_ptr<Runner> makeGlassCeramicRunner(const SceneParameters& p);    // 000 Sec. 5
 std::unique_ptr<Runner> makeKlPlateRunner(const SceneParameters& p);         // KL random modulus
-std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (scenes 5-7)
+std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (5-7), dynamic specimen
 std::unique_ptr<Runner> makeSpecimenRunner(const SceneParameters& p);        // the importer's specimen
 std::unique_ptr<Runner> makeGamutBarRunner(const SceneParameters& p);        // 002's 1D bar
 // The dynamic scenes' own checks (cell-centred lattice, integrator options); throws InvalidInput.

@@ -69,10 +69,37 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
     anyHeld = true;
     const std::string name = std::string("the ") + kSideNames[k] + " grip";
     require(std::isfinite(grip.ux) && std::isfinite(grip.uy), name + " needs a finite displacement");
+    require(std::isfinite(grip.vx) && std::isfinite(grip.vy), name + " needs a finite velocity");
     require(materialAlong(s.youngsModulus, g, static_cast<Side>(k)),
             name + " holds a side along which materialYoungsModulus is 0 (Void): it would hold nothing");
   }
   require(anyHeld, "every grip is free: hold at least one side, or the specimen floats");
+}
+
+ImageSource imageSource(const PointCloud& c, std::size_t p) {
+  const std::size_t gx = c.nx + 2 * c.layers;
+  const auto gi = static_cast<std::ptrdiff_t>(p % gx) - static_cast<std::ptrdiff_t>(c.layers);
+  const auto gj = static_cast<std::ptrdiff_t>(p / gx) - static_cast<std::ptrdiff_t>(c.layers);
+  const auto nx = static_cast<std::ptrdiff_t>(c.nx), ny = static_cast<std::ptrdiff_t>(c.ny);
+  const std::size_t i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(gi, 0, nx - 1));
+  const std::size_t j = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(gj, 0, ny - 1));
+  const Side side = gj < 0 ? Side::Bottom : gj >= ny ? Side::Top : gi < 0 ? Side::Left : Side::Right;
+  return {j * c.nx + i, side, gi < 0 || gj < 0 || gi >= nx || gj >= ny};
+}
+
+PointCloud specimenCloud(const SpecimenSpec& s, const GridSpec& g) {
+  GridSpec grid = g;
+  grid.collar = true;
+  PointCloud c = makeRectangle(grid);
+  std::vector<std::size_t> domain;
+  for (std::size_t q = 0; q < c.size(); ++q) {
+    const ImageSource n = imageSource(c, q);
+    const bool voidMap = s.youngsModulus[n.image] == 0;
+    if (voidMap || (n.inCollar && !s.grips[static_cast<std::size_t>(n.side)].held)) c.region[q] = Region::Void;
+    else if (!n.inCollar) domain.push_back(q);
+  }
+  c.domain = std::move(domain);
+  return c;
 }
 
 }  // namespace peristep

@@ -1,26 +1,44 @@
 #pragma once
 // The importer's specimen (scene Specimen): a plate on the vertex grid of GridSpec (h = Lx/(nx-1), points
 // on the edges) with a material per domain point, pre-crack segments at any angle and a grip per side,
-// broken quasi-statically by the LPS fracture driver (000 Sec. 3.3).
+// broken quasi-statically by the LPS fracture driver (000 Sec. 3.3) or dynamically by the state-based
+// model of 001 with its time integrator.
 #include <array>
 #include <string>
 #include <vector>
 
+#include "core/option_table.hpp"
 #include "geometry/point_cloud.hpp"
 #include "geometry/segments.hpp"
 
 namespace peristep {
 
+enum class SpecimenModel { QuasiStatic, Dynamic };
+
+// Every model of the specimen, its name and description (the FMI enumeration PeriStep.SpecimenModel).
+inline constexpr std::array<Option<SpecimenModel>, 2> kSpecimenModelOptions{{
+    {SpecimenModel::QuasiStatic, "quasiStatic",
+     "LPS with brittle bonds (000 Sec. 3.3): every step moves the held grips by loadFactor * (gripUx, gripUy) "
+     "and breaks bonds until equilibrium at that load"},
+    {SpecimenModel::Dynamic, "dynamic",
+     "State-based model of 001 (bulkModulus, poissonRatio, criticalEnergyReleaseRate, density) integrated in "
+     "time by timeIntegrator: the held grips move at loadFactor * (gripVx, gripVy); materialYoungsModulus "
+     "marks Void and scales the stiffness point by point"},
+}};
+
 enum class Side { Left = 0, Right = 1, Bottom = 2, Top = 3 };
 inline constexpr std::array<const char*, 4> kSideNames{"left", "right", "bottom", "top"};
 
-// A held side's collar moves rigidly by load * (ux, uy); a free side has no collar (traction-free).
+// A held side's collar moves rigidly: by load * (ux, uy) in the quasi-static model, at the velocity
+// load * (vx, vy) in the dynamic one. A free side has no collar (traction-free).
 struct Grip {
   bool held = false;
   double ux = 0, uy = 0;  // [m] at load 1
+  double vx = 0, vy = 0;  // [m/s] at load 1
 };
 
 struct SpecimenSpec {
+  SpecimenModel model = SpecimenModel::QuasiStatic;
   // Per domain point, image order [ny][nx]. youngsModulus 0 marks Void: no material (a hole, a cut-out).
   std::vector<double> youngsModulus, poissonRatio, fractureEnergy;  // [Pa], -, [J/m^2]
   std::vector<Segment> cracks;  // pre-cracks: bonds crossing one are broken from the start
@@ -34,5 +52,19 @@ struct SpecimenSpec {
 // modulus, a fracture energy <= 0, nu outside (-1, 0.5), a segment with an end outside the plate, a held
 // grip along a side where the map is Void, a horizon larger than the plate, no held grip.
 void validate(const SpecimenSpec& s, const GridSpec& grid);
+
+// Where a point of the specimen's cloud (collar included) takes its material from: the nearest image
+// point; and for a collar point, the side it sits beside (corners go with bottom and top).
+struct ImageSource {
+  std::size_t image;
+  Side side;
+  bool inCollar;
+};
+ImageSource imageSource(const PointCloud& cloud, std::size_t p);
+
+// The specimen's cloud: the vertex grid with a collar 2 delta thick on every side (000 Sec. 2.1), of which
+// the points beside a free side or beside Void, and the map's Void points, are Void. The domain lists the
+// material points in image order.
+PointCloud specimenCloud(const SpecimenSpec& s, const GridSpec& grid);
 
 }  // namespace peristep

@@ -2,8 +2,6 @@
 // Void where the material map is 0 (and beside free sides), the map's E (times a KL factor with a random
 // field), nu, G per point, bonds crossing a pre-crack broken, and the quasi-static fracture driver moving
 // the held collars by loadFactor.
-#include <algorithm>
-
 #include "fracture/bond_state.hpp"
 #include "models/lps_material.hpp"
 #include "quadrature/optimization_weights.hpp"
@@ -14,25 +12,6 @@
 
 namespace peristep {
 namespace {
-
-// The image point nearest to point p of the cloud (collar included): the material a collar point takes;
-// and the side a collar point sits beside (corners go with bottom and top).
-struct Nearest {
-  std::size_t image;
-  Side side;
-  bool inCollar;
-};
-
-Nearest nearest(const PointCloud& c, std::size_t p) {
-  const std::size_t gx = c.nx + 2 * c.layers;
-  const auto gi = static_cast<std::ptrdiff_t>(p % gx) - static_cast<std::ptrdiff_t>(c.layers);
-  const auto gj = static_cast<std::ptrdiff_t>(p / gx) - static_cast<std::ptrdiff_t>(c.layers);
-  const auto nx = static_cast<std::ptrdiff_t>(c.nx), ny = static_cast<std::ptrdiff_t>(c.ny);
-  const std::size_t i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(gi, 0, nx - 1));
-  const std::size_t j = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(gj, 0, ny - 1));
-  const Side side = gj < 0 ? Side::Bottom : gj >= ny ? Side::Top : gi < 0 ? Side::Left : Side::Right;
-  return {j * c.nx + i, side, gi < 0 || gj < 0 || gi >= nx || gj >= ny};
-}
 
 struct Built {
   std::shared_ptr<const LpsDiscretization> disc;
@@ -45,20 +24,9 @@ struct Built {
 Built build(const SceneParameters& p) {
   const SpecimenSpec& s = p.specimen;
   Built b;
-  GridSpec grid = p.grid;
-  grid.collar = true;
   LpsDiscretization d;
-  d.cloud = makeRectangle(grid);
-  PointCloud& c = d.cloud;
-  // Void: the map's 0 in the domain, the collar beside a free side or beside Void.
-  std::vector<std::size_t> domain;
-  for (std::size_t q = 0; q < c.size(); ++q) {
-    const Nearest n = nearest(c, q);
-    const bool voidMap = s.youngsModulus[n.image] == 0;
-    if (voidMap || (n.inCollar && !s.grips[static_cast<std::size_t>(n.side)].held)) c.region[q] = Region::Void;
-    else if (!n.inCollar) domain.push_back(q);
-  }
-  c.domain = std::move(domain);
+  d.cloud = specimenCloud(s, p.grid);
+  const PointCloud& c = d.cloud;
   d.neighbours = findNeighbours(c, c.delta);
   d.dofs = numberDofs(c, d.neighbours);
   // Weights on the full neighbourhood, Void included, as for the glass-ceramic plate: the broken-bond
@@ -75,7 +43,7 @@ Built build(const SceneParameters& p) {
   std::vector<double> unit(2 * c.size(), 0.0);
   for (auto& m : b.collars) m.assign(c.size(), 0);
   for (std::size_t q = 0; q < c.size(); ++q) {
-    const Nearest n = nearest(c, q);
+    const ImageSource n = imageSource(c, q);
     const double E = c.isVoid(q) ? 0.0 : s.youngsModulus[n.image] * factor[q];
     const Lame l = planeStrain(E, s.poissonRatio[n.image]);
     b.E.push_back(E);
