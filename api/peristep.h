@@ -88,6 +88,7 @@ enum PeriStepValueReference {
   PERISTEP_VR_DENSITY = 76,                  /* Float64, kg/m^3: dynamic scenes, rho */
 
   /* the specimen scene (PERISTEP_SCENE_SPECIMEN): material maps, pre-cracks and grips */
+  PERISTEP_VR_MATERIAL_DENSITY = 78,         /* Float64 [ny][nx], kg/m^3: read by the dynamic model */
   PERISTEP_VR_MATERIAL_FIELD = 79,           /* Enumeration: enum PeriStepMaterialField */
   PERISTEP_VR_MATERIAL_YOUNGS_MODULUS = 80,  /* Float64 [ny][nx], Pa: 0 = Void (a hole) */
   PERISTEP_VR_MATERIAL_POISSON_RATIO = 81,   /* Float64 [ny][nx] */

@@ -45,6 +45,7 @@ SpecimenSpec specimen(const ParameterValues& v) {
   s.youngsModulus = copied(v.get<double>(PERISTEP_VR_MATERIAL_YOUNGS_MODULUS));
   s.poissonRatio = copied(v.get<double>(PERISTEP_VR_MATERIAL_POISSON_RATIO));
   s.fractureEnergy = copied(v.get<double>(PERISTEP_VR_MATERIAL_FRACTURE_ENERGY));
+  s.density = copied(v.get<double>(PERISTEP_VR_MATERIAL_DENSITY));
   const auto x0 = v.get<double>(PERISTEP_VR_CRACK_X0), y0 = v.get<double>(PERISTEP_VR_CRACK_Y0);
   const auto x1 = v.get<double>(PERISTEP_VR_CRACK_X1), y1 = v.get<double>(PERISTEP_VR_CRACK_Y1);
   for (std::size_t k = 0; k < x0.size(); ++k) s.cracks.push_back({x0[k], y0[k], x1[k], y1[k]});

@@ -327,6 +327,11 @@ std::vector<Variable> makeTable() {
        .description = "Specimen scene: fracture energy G of each domain point, > 0 (a bond breaks at the critical "
                       "stretch of the mean G of its ends, 000:(2.26))",
        .unit = "J/m2", .start = "6.59", .dimensions = image(), .min = Bound{0, true}},
+      {.name = "materialDensity", .vr = PERISTEP_VR_MATERIAL_DENSITY, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: density of each domain point, > 0 (the start value is 001 "
+                      "Table 1's)",
+       .unit = "kg/m3", .start = "1200", .dimensions = image(), .min = Bound{0, true}},
       {.name = "crackX0", .vr = PERISTEP_VR_CRACK_X0, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: x of the first end of each pre-crack segment (any angle, inside the plate); "

@@ -36,9 +36,9 @@ struct DynamicScene {
 
 struct SceneParameters;
 // The importer's specimen (SceneId::Specimen) with SpecimenModel::Dynamic: its cloud, Void and pre-cracks,
-// the state-based material of p (bulkModulus, poissonRatio, criticalEnergyReleaseRate, density) with the
-// stiffness factor E/(3 K (1 - 2 nu)) of each point's materialYoungsModulus (times the KL factor), and each
-// held grip's collar moving at loadFactor * (vx, vy). Time step: 0.8 of the estimated stability limit of
+// the state-based material of p (bulkModulus, poissonRatio, criticalEnergyReleaseRate) with the stiffness
+// factor E/(3 K (1 - 2 nu)) of each point's materialYoungsModulus (times the KL factor) and its
+// materialDensity, and each held grip's collar moving at loadFactor * (vx, vy). Time step: 0.8 of the estimated stability limit of
 // central difference (solvers/stability_limit.hpp).
 DynamicScene makeDynamicSpecimen(const SceneParameters& p);
 // The material of 001 Table 1 as the parameters set it (bulkModulus, poissonRatio,

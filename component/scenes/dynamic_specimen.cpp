@@ -34,8 +34,10 @@ DynamicScene makeDynamicSpecimen(const SceneParameters& p) {
   scene.material.assign(c.size(), 0);
   scene.youngsModulus.assign(c.size(), 0.0);
   scene.outputPoints.assign(c.nx * c.ny, 0);
+  std::vector<double> density(c.size());
   for (std::size_t q = 0; q < c.size(); ++q) {
     const ImageSource src = imageSource(c, q);
+    density[q] = s.density[src.image];
     if (c.image[q] >= 0) scene.outputPoints[static_cast<std::size_t>(c.image[q])] = q;
     if (c.isVoid(q)) continue;
     scene.youngsModulus[q] = s.youngsModulus[src.image] * factor[q];
@@ -45,6 +47,7 @@ DynamicScene makeDynamicSpecimen(const SceneParameters& p) {
   }
   scene.model = std::make_unique<StateBasedModel>(makeStateBasedMaterial(in, c.delta), buildStateBasedBonds(c, bo));
   scene.problem = std::make_unique<DynamicProblem>(*scene.model, in.density);
+  scene.problem->setDensity(std::move(density));
   for (std::size_t k = 0; k < 4; ++k) {
     if (scene.grips[k].empty()) continue;
     std::vector<std::uint32_t> x, y;

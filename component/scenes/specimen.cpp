@@ -36,6 +36,7 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
   length(s.youngsModulus, "materialYoungsModulus");
   length(s.poissonRatio, "materialPoissonRatio");
   length(s.fractureEnergy, "materialFractureEnergy");
+  length(s.density, "materialDensity");
   bool anyMaterial = false;
   for (std::size_t i = 0; i < n; ++i) {
     const std::string at = "[" + std::to_string(i) + "] (x, y index " + std::to_string(i % g.nx) + ", " +
@@ -44,6 +45,8 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
             "materialYoungsModulus" + at + " must be >= 0 (0: Void), got " + text(s.youngsModulus[i]));
     require(std::isfinite(s.fractureEnergy[i]) && s.fractureEnergy[i] > 0,
             "materialFractureEnergy" + at + " must be positive, got " + text(s.fractureEnergy[i]));
+    require(std::isfinite(s.density[i]) && s.density[i] > 0,
+            "materialDensity" + at + " must be positive, got " + text(s.density[i]));
     require(admissiblePoissonRatio(s.poissonRatio[i]),
             "materialPoissonRatio" + at + " must lie in (-1, 0.5), got " + text(s.poissonRatio[i]));
     anyMaterial = anyMaterial || s.youngsModulus[i] > 0;

@@ -21,9 +21,9 @@ inline constexpr std::array<Option<SpecimenModel>, 2> kSpecimenModelOptions{{
      "LPS with brittle bonds (000 Sec. 3.3): every step moves the held grips by loadFactor * (gripUx, gripUy) "
      "and breaks bonds until equilibrium at that load"},
     {SpecimenModel::Dynamic, "dynamic",
-     "State-based model of 001 (bulkModulus, poissonRatio, criticalEnergyReleaseRate, density) integrated in "
-     "time by timeIntegrator: the held grips move at loadFactor * (gripVx, gripVy); materialYoungsModulus "
-     "marks Void and scales the stiffness point by point"},
+     "State-based model of 001 (bulkModulus, poissonRatio, criticalEnergyReleaseRate) integrated in time by "
+     "timeIntegrator: the held grips move at loadFactor * (gripVx, gripVy); materialYoungsModulus marks Void "
+     "and scales the stiffness point by point, materialDensity gives the mass"},
 }};
 
 enum class Side { Left = 0, Right = 1, Bottom = 2, Top = 3 };
@@ -41,6 +41,7 @@ struct SpecimenSpec {
   SpecimenModel model = SpecimenModel::QuasiStatic;
   // Per domain point, image order [ny][nx]. youngsModulus 0 marks Void: no material (a hole, a cut-out).
   std::vector<double> youngsModulus, poissonRatio, fractureEnergy;  // [Pa], -, [J/m^2]
+  std::vector<double> density;  // [kg/m^3], read by the dynamic model
   std::vector<Segment> cracks;  // pre-cracks: bonds crossing one are broken from the start
   std::array<Grip, 4> grips{};  // by Side
   // Young's modulus times the Karhunen-Loeve factor of mean 1 from the scene's xi, covariance, correlation
@@ -49,7 +50,7 @@ struct SpecimenSpec {
 };
 
 // Throws InvalidInput naming the first inconsistency: a map of the wrong length, a negative or non-finite
-// modulus, a fracture energy <= 0, nu outside (-1, 0.5), a segment with an end outside the plate, a held
+// modulus, a fracture energy or density <= 0, nu outside (-1, 0.5), a segment with an end outside the plate, a held
 // grip along a side where the map is Void, a horizon larger than the plate, no held grip.
 void validate(const SpecimenSpec& s, const GridSpec& grid);
 

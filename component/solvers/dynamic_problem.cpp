@@ -28,6 +28,16 @@ void DynamicProblem::prescribeVelocity(const std::vector<std::uint32_t>& dofs, d
   }
 }
 
+void DynamicProblem::setDensity(std::vector<double> perPoint) {
+  require(perPoint.size() == model_.points(), "dynamic problem: density needs one value per point");
+  invRho_.clear();
+  for (const double rho : perPoint) {
+    require(std::isfinite(rho) && rho > 0, "dynamic problem: density must be positive");
+    invRho_.push_back(1.0 / rho);
+  }
+  rho_ = std::move(perPoint);
+}
+
 void DynamicProblem::setBodyForce(std::vector<double> profile, std::function<double(double)> amplitude) {
   require(profile.size() == dofs(), "dynamic problem: body force profile needs one value per dof");
   require(static_cast<bool>(amplitude), "dynamic problem: body force needs an amplitude function");
@@ -74,14 +84,17 @@ void DynamicProblem::acceleration(double t, const double* u, double* f, double* 
   const double amp = bodyAmplitude(t), inv = 1.0 / density_;
   const auto n = static_cast<std::ptrdiff_t>(dofs());
   const double* b = bodyProfile_.empty() ? nullptr : bodyProfile_.data();
+  const double* invRho = invRho_.empty() ? nullptr : invRho_.data();
 #pragma omp parallel for schedule(static) if (threaded())
-  for (std::ptrdiff_t d = 0; d < n; ++d) a[d] = prescribed_[d] ? 0.0 : inv * (f[d] + (b ? amp * b[d] : 0.0));
+  for (std::ptrdiff_t d = 0; d < n; ++d)
+    a[d] = prescribed_[d] ? 0.0 : (invRho ? invRho[d / 2] : inv) * (f[d] + (b ? amp * b[d] : 0.0));
 }
 
 void DynamicProblem::accelerationDerivative(const double* u, const double* du, double* da) {
   model_.forceDerivative(u, du, da);
   const double inv = 1.0 / density_;
-  for (std::size_t d = 0; d < dofs(); ++d) da[d] = prescribed_[d] ? 0.0 : inv * da[d];
+  for (std::size_t d = 0; d < dofs(); ++d)
+    da[d] = prescribed_[d] ? 0.0 : (invRho_.empty() ? inv : invRho_[d / 2]) * da[d];
 }
 
 void DynamicProblem::applyPrescribed(double t, double* u, double* v) const {
@@ -105,6 +118,10 @@ double DynamicProblem::externalPower(double t, const double* f, const double* v)
 
 double DynamicProblem::kineticEnergy(const double* v) const {
   double e = 0;
+  if (!rho_.empty()) {
+    for (std::size_t d = 0; d < dofs(); ++d) e += rho_[d / 2] * model_.pointVolume(d / 2) * v[d] * v[d];
+    return 0.5 * e;
+  }
   for (std::size_t d = 0; d < dofs(); ++d) e += model_.pointVolume(d / 2) * v[d] * v[d];
   return 0.5 * density_ * e;
 }

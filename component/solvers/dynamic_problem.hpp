@@ -18,6 +18,8 @@ class DynamicProblem {
 
   // Dofs (2 p + component) moving at a constant velocity: u(t) = u(0) + velocity t (velocity 0 holds them).
   void prescribeVelocity(const std::vector<std::uint32_t>& dofs, double velocity);
+  // A density per point [kg/m^3] instead of the one given to the constructor (a specimen's map).
+  void setDensity(std::vector<double> perPoint);
   // b(x_p, t) = amplitude(t) * profile[dof] [N/m^3].
   void setBodyForce(std::vector<double> profile, std::function<double(double)> amplitude);
   // Initial displacement and velocity (interleaved, 2 N each); prescribed dofs take their own velocity.
@@ -40,7 +42,8 @@ class DynamicProblem {
   // Loops over dofs use threads only above this size (below, a parallel region costs more than it saves).
   bool threaded() const { return dofs() >= 40000; }
   std::size_t dofs() const { return 2 * model_.points(); }
-  double density() const { return density_; }
+  double density() const { return density_; }               // the uniform density, unless...
+  const std::vector<double>& pointDensity() const { return rho_; }  // ...one per point is set (else empty)
   const std::vector<char>& prescribed() const { return prescribed_; }   // 1 on prescribed dofs
   const std::vector<std::uint32_t>& prescribedDofs() const { return prescribedList_; }
   const std::vector<double>& prescribedVelocity() const { return velocity_; }
@@ -63,6 +66,7 @@ class DynamicProblem {
  private:
   ForceModel& model_;
   double density_;
+  std::vector<double> rho_, invRho_;  // per point, when set
   std::vector<char> prescribed_;
   std::vector<std::uint32_t> prescribedList_;
   std::vector<double> velocity_;

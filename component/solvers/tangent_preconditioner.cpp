@@ -1,5 +1,6 @@
 #include "solvers/tangent_preconditioner.hpp"
 
+#include <cmath>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -11,11 +12,26 @@ TangentPreconditioner::TangentPreconditioner(DynamicProblem& problem) : n_(probl
   A0_ = problem.model().tangent(zero.data());
   const std::vector<char>& fixed = problem.prescribed();
   A0_.prune([&fixed](Eigen::Index r, Eigen::Index c, double) { return !fixed[r] && !fixed[c]; });
-  A0_ /= problem.density();
+  const std::vector<double>& rho = problem.pointDensity();
+  if (rho.empty()) {
+    A0_ /= problem.density();
+  } else {
+    // A0 = D^-1 K with D the density per dof is not symmetric, but D^1/2 A0 D^-1/2 = D^-1/2 K D^-1/2 is:
+    // (I - gamma^2 A0) z = b  <=>  (I - gamma^2 S) (D^1/2 z) = D^1/2 b.
+    Eigen::VectorXd s(static_cast<Eigen::Index>(n_)), inv(static_cast<Eigen::Index>(n_));
+    for (std::size_t d = 0; d < n_; ++d) {
+      s[static_cast<Eigen::Index>(d)] = std::sqrt(rho[d / 2]);
+      inv[static_cast<Eigen::Index>(d)] = 1.0 / rho[d / 2];
+    }
+    const Eigen::VectorXd isq = s.cwiseInverse();
+    S_ = isq.asDiagonal() * A0_ * isq.asDiagonal();
+    A0_ = inv.asDiagonal() * A0_;
+    sqrtRho_ = s;
+  }
   const auto n = static_cast<Eigen::Index>(n_);
   Eigen::SparseMatrix<double> I(n, n);
   I.setIdentity();
-  M_ = I - A0_;  // the pattern of I - gamma^2 A0 for every gamma
+  M_ = I - symmetric();  // the pattern of I - gamma^2 S for every gamma
   ldlt_.analyzePattern(M_);
   rhs_.resize(n);
   zu_.resize(n);
@@ -26,7 +42,7 @@ void TangentPreconditioner::setup(double gamma) {
   const auto n = static_cast<Eigen::Index>(n_);
   Eigen::SparseMatrix<double> I(n, n);
   I.setIdentity();
-  M_ = I - (gamma * gamma) * A0_;
+  M_ = I - (gamma * gamma) * symmetric();
   ldlt_.factorize(M_);
   if (ldlt_.info() != Eigen::Success)
     throw SolverFailure("tangent preconditioner: factorization of I - gamma^2 A0 failed (gamma = " +
@@ -43,7 +59,12 @@ void TangentPreconditioner::solve(const double* r, double* z, double gamma) {
   const Eigen::Map<const Eigen::VectorXd> ru(r, n), rv(r + n, n);
   Eigen::Map<Eigen::VectorXd> zu(z, n), zv(z + n, n);
   rhs_ = ru + gamma * rv;
-  zu_ = ldlt_.solve(rhs_);
+  if (sqrtRho_.size() > 0) {
+    rhs_ = sqrtRho_.cwiseProduct(rhs_);
+    zu_ = ldlt_.solve(rhs_).cwiseQuotient(sqrtRho_);
+  } else {
+    zu_ = ldlt_.solve(rhs_);
+  }
   zu = zu_;
   zv = rv + gamma * (A0_ * zu_);
 }

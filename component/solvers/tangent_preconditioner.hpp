@@ -3,8 +3,9 @@
 //   M = I - gamma J,  J = [[0, I], [A, 0]],  A = d(acceleration)/du.
 // With A replaced by A0, the rest-state tangent restricted to the free dofs, P z = r is solved exactly:
 //   (I - gamma^2 A0) z_u = r_u + gamma r_v,   z_v = r_v + gamma A0 z_u.
-// -A0 is symmetric positive semidefinite, so I - gamma^2 A0 is SPD: a sparse LDL^T, factorized in
-// setup() (the pattern is analysed once) and reused by solve() for nearby gamma.
+// -A0 is symmetric positive semidefinite (with one density; with a density per point D, -S =
+// -D^1/2 A0 D^-1/2 is), so I - gamma^2 A0 (I - gamma^2 S) is SPD: a sparse LDL^T, factorized in setup()
+// (the pattern is analysed once) and reused by solve() for nearby gamma.
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -23,7 +24,11 @@ class TangentPreconditioner {
 
  private:
   std::size_t n_;
-  Eigen::SparseMatrix<double> A0_;
+  // S (A0 itself with one density)
+  const Eigen::SparseMatrix<double>& symmetric() const { return sqrtRho_.size() > 0 ? S_ : A0_; }
+
+  Eigen::SparseMatrix<double> A0_, S_;  // S_ only with a density per point
+  Eigen::VectorXd sqrtRho_;             // per dof, with a density per point; else empty
   Eigen::SparseMatrix<double> M_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   double gamma_ = -1;
