@@ -489,8 +489,9 @@ fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoi
     *terminateSimulation = fmi3False;
     *earlyReturn = fmi3False;
     *lastSuccessfulTime = currentCommunicationPoint;
-    *lastSuccessfulTime = s.doStep(currentCommunicationPoint, communicationStepSize);
-    *terminateSimulation = s.testOver() ? fmi3True : fmi3False;
+    const Instance::StepEnd end = s.doStep(currentCommunicationPoint, communicationStepSize);
+    *lastSuccessfulTime = end.time;
+    *terminateSimulation = end.testOver ? fmi3True : fmi3False;
   });
 }
 

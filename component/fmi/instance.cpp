@@ -88,7 +88,7 @@ void Instance::exitInitializationMode() {
   logger_.event("entered Step Mode");
 }
 
-double Instance::doStep(double currentCommunicationPoint, double communicationStepSize) {
+Instance::StepEnd Instance::doStep(double currentCommunicationPoint, double communicationStepSize) {
   require(std::isfinite(currentCommunicationPoint),
           "currentCommunicationPoint must be finite, got " + number(currentCommunicationPoint));
   require(std::isfinite(communicationStepSize) && communicationStepSize > 0,
@@ -107,8 +107,9 @@ double Instance::doStep(double currentCommunicationPoint, double communicationSt
   if (logger_.eventsOn())
     logger_.event("step to t = " + number(time_) + " at loadFactor = " +
                   number(values_.scalar<double>(PERISTEP_VR_LOAD_FACTOR)) + " in " + number(watch.seconds()) + " s");
-  if (testOver()) logger_.event("the crack has crossed the specimen at t = " + number(time_) + ": terminateSimulation");
-  return time_;
+  const bool over = model_ && model_->separated();
+  if (over) logger_.event("the crack has crossed the specimen at t = " + number(time_) + ": terminateSimulation");
+  return {time_, over};
 }
 
 void Instance::terminate() {

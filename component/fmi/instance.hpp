@@ -36,10 +36,13 @@ class Instance {
   void enterInitializationMode(double startTime, bool stopTimeDefined, double stopTime);
   // Builds the scene and solves at the current input (outputs at the start time).
   void exitInitializationMode();
-  // Solves at the current input; returns the new time.
-  double doStep(double currentCommunicationPoint, double communicationStepSize);
-  // The scene's test is over (a fracture specimen has split in two): fmi3DoStep's terminateSimulation.
-  bool testOver() const { return model_ && model_->separated(); }
+  // Solves at the current input: the new time, and whether the scene's test is over (a fracture specimen
+  // has split in two: fmi3DoStep's terminateSimulation).
+  struct StepEnd {
+    double time;
+    bool testOver;
+  };
+  StepEnd doStep(double currentCommunicationPoint, double communicationStepSize);
   void terminate();
   // Back to Instantiated with every start value (FMU states stay valid).
   void reset();
