@@ -3,6 +3,7 @@
 // cracks from the notch past the inclusion.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 #include "host_test_support.hpp"
@@ -50,4 +51,40 @@ TEST_CASE("peristep run: a specimen described in the scene file cracks from its 
   const std::vector<double> last(damage.values.end() - kPoints, damage.values.end());
   CHECK(crackFront(last) >= kPassed);
   CHECK(crackedInInclusion(last) == 0);
+}
+
+TEST_CASE("peristep run: a dynamic specimen from a scene file cracks from its notch as the grip pulls",
+          "[host][run][specimen][dynamic]") {
+  // The plate of the C ABI test (tests/fmi_dynamic_specimen_test.cpp) without the hole: Young's modulus
+  // 3 K (1 - 2 nu) of 001 Table 1 everywhere, the top grip at 0.2 m/s, 30 steps of 50 us.
+  TempDir dir;
+  std::ostringstream toml;
+  toml.precision(17);
+  toml << "[parameters]\nscene = \"specimen\"\nspecimenModel = \"dynamic\"\nnx = " << kNx << "\nny = " << kNy
+       << "\nLx = " << kLx << "\nLy = " << kLy
+       << "\nmaterialYoungsModulus = " << tomlArray(std::vector<double>(kPoints, 3 * 25e9 * (1 - 2 * 0.25)))
+       << "\ncrackX0 = [" << kNotch[0] << "]\ncrackY0 = [" << kNotch[1] << "]\ncrackX1 = [" << kNotch[2]
+       << "]\ncrackY1 = [" << kNotch[3] << "]\ngripBottom = \"held\"\ngripTop = \"held\"\ngripTopVy = 0.2"
+       << "\n[loading]\ninput = \"loadFactor\"\nfrom = 1.0\nto = 1.0\nsteps = 30\nstartTime = 0.0\nstopTime = 1.5e-3\n";
+  writeText(dir / "dynamic.toml", toml.str());
+  const ProcessResult r =
+      runProcess({PERISTEP_HOST_BINARY, "run", "dynamic.toml", "--fmu", PERISTEP_FMU, "--out", "d.h5"}, dir.path());
+  INFO(r.err);
+  REQUIRE(r.exitCode == 0);
+  const hid_t f = openHdf5(dir / "d.h5");
+  REQUIRE(f >= 0);
+  const Dataset damage = readDataset(f, "/fields/damage"), crack = readDataset(f, "/scalars/crackLength");
+  const Dataset work = readDataset(f, "/scalars/externalWork"), time = readDataset(f, "/time");
+  H5Fclose(f);
+  REQUIRE(damage.shape == std::vector<hsize_t>{30, kNy, kNx});
+  CHECK(time.values.back() == Approx(1.5e-3));
+  CHECK(std::is_sorted(work.values.begin(), work.values.end()));  // the grip only pulls
+  CHECK(crack.values.front() == 0.0);
+  CHECK(crack.values.back() > 0.5);
+  // Z > 1 (001:(104)) along the crack has run from the notch tip at x = -0.6 past the plate's middle.
+  const std::vector<double> last(damage.values.end() - kPoints, damage.values.end());
+  double far = -1;
+  for (std::size_t i = 0; i < kPoints; ++i)
+    if (last[i] > 1) far = std::max(far, xOf(i));
+  CHECK(far > 0.0);
 }

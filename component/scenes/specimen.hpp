@@ -23,7 +23,8 @@ inline constexpr std::array<Option<SpecimenModel>, 2> kSpecimenModelOptions{{
     {SpecimenModel::Dynamic, "dynamic",
      "State-based model of 001 (bulkModulus, poissonRatio, criticalEnergyReleaseRate) integrated in time by "
      "timeIntegrator: the held grips move at loadFactor * (gripVx, gripVy); materialYoungsModulus marks Void "
-     "and scales the stiffness point by point, materialDensity gives the mass"},
+     "and scales the stiffness point by point (and with it the bonds' fracture energy), materialDensity gives "
+     "the mass"},
 }};
 
 enum class Side { Left = 0, Right = 1, Bottom = 2, Top = 3 };
