@@ -53,20 +53,26 @@ TEST_CASE("peristep run: a specimen described in the scene file cracks from its 
   CHECK(crackedInInclusion(last) == 0);
 }
 
-TEST_CASE("peristep run: a dynamic specimen from a scene file cracks from its notch as the grip pulls",
-          "[host][run][specimen][dynamic]") {
-  // The plate of the C ABI test (tests/fmi_dynamic_specimen_test.cpp) without the hole: Young's modulus
-  // 3 K (1 - 2 nu) of 001 Table 1 everywhere, the top grip at 0.2 m/s, 30 steps of 50 us.
-  TempDir dir;
+// The plate of the C ABI test (tests/fmi_dynamic_specimen_test.cpp) without the hole: Young's modulus
+// 3 K (1 - 2 nu) of 001 Table 1 everywhere, the top grip at 0.2 m/s, `steps` steps of 50 us; `extra`
+// lines join [parameters].
+std::string dynamicPlate(int steps, const std::string& extra = "") {
   std::ostringstream toml;
   toml.precision(17);
   toml << "[parameters]\nscene = \"specimen\"\nspecimenModel = \"dynamic\"\nnx = " << kNx << "\nny = " << kNy
        << "\nLx = " << kLx << "\nLy = " << kLy
        << "\nmaterialYoungsModulus = " << tomlArray(std::vector<double>(kPoints, 3 * 25e9 * (1 - 2 * 0.25)))
        << "\ncrackX0 = [" << kNotch[0] << "]\ncrackY0 = [" << kNotch[1] << "]\ncrackX1 = [" << kNotch[2]
-       << "]\ncrackY1 = [" << kNotch[3] << "]\ngripBottom = \"held\"\ngripTop = \"held\"\ngripTopVy = 0.2"
-       << "\n[loading]\ninput = \"loadFactor\"\nfrom = 1.0\nto = 1.0\nsteps = 30\nstartTime = 0.0\nstopTime = 1.5e-3\n";
-  writeText(dir / "dynamic.toml", toml.str());
+       << "]\ncrackY1 = [" << kNotch[3] << "]\ngripBottom = \"held\"\ngripTop = \"held\"\ngripTopVy = 0.2\n"
+       << extra << "[loading]\ninput = \"loadFactor\"\nfrom = 1.0\nto = 1.0\nsteps = " << steps
+       << "\nstartTime = 0.0\nstopTime = " << 5e-5 * steps << "\n";
+  return toml.str();
+}
+
+TEST_CASE("peristep run: a dynamic specimen from a scene file cracks from its notch as the grip pulls",
+          "[host][run][specimen][dynamic]") {
+  TempDir dir;
+  writeText(dir / "dynamic.toml", dynamicPlate(30));
   const ProcessResult r =
       runProcess({PERISTEP_HOST_BINARY, "run", "dynamic.toml", "--fmu", PERISTEP_FMU, "--out", "d.h5"}, dir.path());
   INFO(r.err);
@@ -87,4 +93,38 @@ TEST_CASE("peristep run: a dynamic specimen from a scene file cracks from its no
   for (std::size_t i = 0; i < kPoints; ++i)
     if (last[i] > 1) far = std::max(far, xOf(i));
   CHECK(far > 0.0);
+}
+
+TEST_CASE("peristep sample: a dynamic specimen with a KL modulus field, collocated in two coordinates",
+          "[host][sample][specimen][dynamic]") {
+  // Smolyak level 1 in xi1, xi2 (5 nodes, the first at xi = 0); `peristep run` of the same file at xi = 0
+  // gives the first sample's crack length bit for bit.
+  TempDir dir;
+  writeText(dir / "kl.toml", dynamicPlate(20, "materialField = \"klField\"\nxi = [0.0, 0.0]\n"));
+  const ProcessResult s = runProcess({PERISTEP_HOST_BINARY, "sample", "kl.toml", "--rule", "smolyak", "--level", "1",
+                                      "--out", "s.h5", "--fmu", PERISTEP_FMU},
+                                     dir.path());
+  INFO(s.out << s.err);
+  REQUIRE(s.exitCode == 0);
+  const ProcessResult r =
+      runProcess({PERISTEP_HOST_BINARY, "run", "kl.toml", "--fmu", PERISTEP_FMU, "--out", "r.h5"}, dir.path());
+  REQUIRE(r.exitCode == 0);
+  hid_t f = openHdf5(dir / "s.h5");
+  REQUIRE(f >= 0);
+  const Dataset nodes = readDataset(f, "/level_1/nodes"), crack = readDataset(f, "/level_1/samples/crackLength");
+  const Dataset E = readDataset(f, "/level_1/samples/youngsModulus");
+  H5Fclose(f);
+  f = openHdf5(dir / "r.h5");
+  REQUIRE(f >= 0);
+  const Dataset runCrack = readDataset(f, "/scalars/crackLength");
+  H5Fclose(f);
+  REQUIRE(nodes.shape == std::vector<hsize_t>{5, 2});
+  REQUIRE(crack.values.size() == 5);
+  CHECK(nodes.values[0] == 0.0);
+  CHECK(nodes.values[1] == 0.0);
+  CHECK(crack.values[0] == runCrack.values.back());
+  // The field changes the plate (its modulus) and with it the crack.
+  CHECK(E.values[kPoints] != E.values[0]);
+  CHECK(*std::max_element(crack.values.begin(), crack.values.end()) >
+        *std::min_element(crack.values.begin(), crack.values.end()));
 }
