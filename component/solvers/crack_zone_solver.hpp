@@ -35,9 +35,14 @@ class CrackZoneSolver {
   std::size_t update(const CsrMatrix& A, std::span<const std::size_t> points);
 
   // x = A^-1 b for the current A (the factorized one plus the updates), refined from the given x against A
-  // until the componentwise backward error max_i |b - A x|_i / (|A| |x| + |b|)_i is at most tol; returns
-  // the number of solves with the factors.
-  int solve(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol);
+  // until the componentwise backward error max_i |b - A x|_i / (|A| |x| + |b|)_i is at most tol; false
+  // when it does not get there (x is then not to be used): single-precision factors of a matrix whose
+  // condition number passes ~1e7 (a fragment held only by the driver's springs) do not converge.
+  bool solve(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol);
+
+  FactorPrecision precision() const { return sparse_.precision(); }
+  // From the next factorize() on.
+  void setPrecision(FactorPrecision precision) { sparse_.setPrecision(precision); }
 
   // Checkpoints: the dense solver's state is a function of the matrix its LU was last computed with (base)
   // and of the order in which rows entered its correction since; restoring replays both.

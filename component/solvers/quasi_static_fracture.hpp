@@ -26,6 +26,7 @@ struct LoadStepReport {
   int krylovIterations = 0;    // GMRES iterations preconditioned by an older factorization
   int denseFactorizations = 0; // dense LU factorizations of the crack zone's Schur complement
   std::int64_t substitutions = 0;  // solves with the crack zone's factors (refinement and GMRES included)
+  int precisionFallbacks = 0;  // single-precision zone factors that did not converge: double from then on
   std::size_t newlyBroken = 0; // pairs broken at this load
   // Wall time of the phases (profiling only: no decision depends on them, so runs stay reproducible).
   double assemblySeconds = 0, factorizationSeconds = 0, solveSeconds = 0, bondCheckSeconds = 0;
@@ -36,6 +37,7 @@ struct LoadStepReport {
     krylovIterations += o.krylovIterations;
     denseFactorizations += o.denseFactorizations;
     substitutions += o.substitutions;
+    precisionFallbacks += o.precisionFallbacks;
     newlyBroken += o.newlyBroken;
     assemblySeconds += o.assemblySeconds;
     factorizationSeconds += o.factorizationSeconds;
@@ -108,6 +110,7 @@ class QuasiStaticFracture {
   std::vector<double> zonePriority() const;
   void rebuildZone(LoadStepReport& report);
   void solveInZone(const std::vector<double>& rhs, LoadStepReport& report);
+  void solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report);
   void solveWithFactorization(const std::vector<double>& rhs, LoadStepReport& report);
   // Ski rental: GMRES with an older factorization while the iterations spent on it stay below the price of
   // a new one (so at most twice the better choice is paid); false when over budget or not converged.

@@ -252,7 +252,10 @@ class Mumps final : public SchurFactorization::Backend {
 
 }  // namespace
 
-SchurFactorization::SchurFactorization(FactorPrecision precision) : precision_(precision) {
+SchurFactorization::SchurFactorization(FactorPrecision precision) { setPrecision(precision); }
+
+void SchurFactorization::setPrecision(FactorPrecision precision) {
+  precision_ = precision;
   if (precision == FactorPrecision::Single)
     backend_ = std::make_unique<Mumps<float>>();
   else

@@ -25,6 +25,8 @@ class SchurFactorization {
   SchurFactorization& operator=(const SchurFactorization&) = delete;
 
   FactorPrecision precision() const { return precision_; }
+  // Another precision from the next factorize() on (drops the present factors).
+  void setPrecision(FactorPrecision precision);
 
   // Factorizes D A D (D = diag(scale); A square, its pattern fixed for the lifetime of this object) with
   // `schurUnknowns` (ascending, possibly empty) eliminated last, in the order `position` (the pivot
