@@ -63,11 +63,13 @@ TOML
 # Column of a CSV header by name (empty when the CSV has none).
 colnum() { head -1 "$1" | tr ',' '\n' | { grep -nx "$2" || true; } | cut -d: -f1; }
 
-# Median, largest and sum of the per-sample wall times kept in a sample store (a double after the magic).
+# Median, largest and sum of the per-sample wall times kept in a sample store (the projection script reads them).
 sample_seconds() {
-  python3 - "$1" <<'PY'
-import glob, statistics, struct, sys
-t = [struct.unpack_from("<d", open(p, "rb").read(16), 8)[0] for p in glob.glob(sys.argv[1] + "/sample-*.bin")]
+  python3 - "$1" "$here/bench" <<'PY'
+import statistics, sys
+sys.path.insert(0, sys.argv[2])
+from glass_ceramic_projection import sample_seconds
+t = sample_seconds(sys.argv[1])
 print(f"{statistics.median(t):.1f},{max(t):.1f},{sum(t):.0f}")
 PY
 }
