@@ -141,8 +141,8 @@ TEST_CASE("value references, types, array sizes and pointers are checked", "[abi
   const Fmu& f = s.fmu;
   std::vector<double> buffer(100);
   SECTION("unknown value reference") {
-    const fmi3ValueReference vr[] = {PERISTEP_VR_LX, 99};
-    requireRefused(s, "fmi3GetFloat64", "unknown value reference 99",
+    const fmi3ValueReference vr[] = {PERISTEP_VR_LX, 999};
+    requireRefused(s, "fmi3GetFloat64", "unknown value reference 999",
                    [&] { return f.fmi3GetFloat64(s.instance, vr, 2, buffer.data(), 2); });
   }
   SECTION("nValues smaller than the listed arrays") {
