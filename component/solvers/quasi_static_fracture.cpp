@@ -303,12 +303,15 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
 }
 
 void QuasiStaticFracture::solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report) {
-  const std::vector<double> start = x_;
-  if (zone_->solve(system_.A, rhs, x_, kKrylovTolerance)) return;
   // Single-precision factors refined in double diverge once the matrix is too ill-conditioned (a fragment
   // held only by the springs; h = 8 um, f = 0.4, seed 87 at U_D = 0.828 um): the zone is factorized in
   // double precision from then on. A double-precision solve that stops short of tol stands as before.
-  if (zone_->precision() != FactorPrecision::Single) return;
+  if (zone_->precision() != FactorPrecision::Single) {
+    zone_->solve(system_.A, rhs, x_, kKrylovTolerance);
+    return;
+  }
+  const std::vector<double> start = x_;  // where a fall-back starts again
+  if (zone_->solve(system_.A, rhs, x_, kKrylovTolerance)) return;
   zone_->setPrecision(FactorPrecision::Double);
   ++report.precisionFallbacks;
   factorizeZone(report);
