@@ -175,7 +175,8 @@ enum PeriStepGamutProtocol {
 /* Values of the enumeration PeriStep.MaterialField (variable "materialField", specimen scene) */
 enum PeriStepMaterialField {
   PERISTEP_MATERIAL_MAP = 1,     /* the maps as given */
-  PERISTEP_MATERIAL_KL_FIELD = 2 /* Young's modulus map times the KL factor of xi (as the KL plate's E0 = 1) */
+  PERISTEP_MATERIAL_KL_FIELD = 2,    /* Young's modulus map times the KL factor of xi (as the KL plate's E0 = 1) */
+  PERISTEP_MATERIAL_GLASS_CERAMIC = 3 /* the glass-ceramic of 000 Sec. 5 (seed or PCA field), as scene glassCeramic */
 };
 
 /* Values of the enumeration PeriStep.SpecimenModel (variable "specimenModel", specimen scene) */

@@ -44,6 +44,9 @@ Simulation::Simulation(const FmuLibrary& library, const ModelDescription& md, co
                        const FmuInstance::Options& options)
     : md_(md), scene_(scene), instance_(library, md, options), schedule_(loadSchedule(scene.loading)) {
   setSceneParameters(instance_, scene);
+  // The ramped input starts at `from`: a fracture scene solves at its inputs when initialized, and bonds
+  // broken at the input's start value (loadFactor 1) would stay broken.
+  if (scene.loading.input) instance_.set(*scene.loading.input, std::vector<double>{scene.loading.from});
   instance_.enterInitializationMode(scene.loading.startTime, scene.loading.stopTime);
   instance_.exitInitializationMode();
 

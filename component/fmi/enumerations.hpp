@@ -54,7 +54,8 @@ inline constexpr std::array<Option<SceneId>, 10> kSceneOptions{{
      "DefaultExperiment fits"},
     {SceneId::GlassCeramic, "glassCeramic",
      "Pre-cracked glass-ceramic plate opened by loadDisplacement; microstructure from seed or its PCA field "
-     "(Fan et al., Sec. 5); quasi-static, any step size: the paper's plate is Lx = 800e-6 m, Ly = 400e-6 m "
+     "(Fan et al., Sec. 5); a preset of the specimen scene (materialField glassCeramic, grips bottom and top, "
+     "reactions as the specimen's); quasi-static, any step size: the paper's plate is Lx = 800e-6 m, Ly = 400e-6 m "
      "(e.g. nx = 51, ny = 26), opened in increments of 4e-9 m, one per step"},
     {SceneId::PlexiglassCrack, "plexiglassCrack",
      "Dynamic crack in a pre-cracked Plexiglass square, bottom strips pulled apart (Jha-Lipton, Sec. 6.1); "
@@ -85,6 +86,12 @@ inline constexpr std::array<Option<SceneId>, 10> kSceneOptions{{
 inline constexpr std::array<EnumerationValue<SpecimenModel>, 2> kSpecimenModelValues{{
     {PERISTEP_SPECIMEN_QUASI_STATIC, SpecimenModel::QuasiStatic},
     {PERISTEP_SPECIMEN_DYNAMIC, SpecimenModel::Dynamic},
+}};
+
+inline constexpr std::array<EnumerationValue<SpecimenMaterial>, 3> kMaterialFieldValues{{
+    {PERISTEP_MATERIAL_MAP, SpecimenMaterial::Maps},
+    {PERISTEP_MATERIAL_KL_FIELD, SpecimenMaterial::KlField},
+    {PERISTEP_MATERIAL_GLASS_CERAMIC, SpecimenMaterial::GlassCeramic},
 }};
 
 inline constexpr std::array<EnumerationValue<LinearSolverKind>, 4> kLinearSolverValues{{

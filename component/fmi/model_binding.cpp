@@ -49,7 +49,7 @@ SpecimenSpec specimen(const ParameterValues& v) {
   const auto x0 = v.get<double>(PERISTEP_VR_CRACK_X0), y0 = v.get<double>(PERISTEP_VR_CRACK_Y0);
   const auto x1 = v.get<double>(PERISTEP_VR_CRACK_X1), y1 = v.get<double>(PERISTEP_VR_CRACK_Y1);
   for (std::size_t k = 0; k < x0.size(); ++k) s.cracks.push_back({x0[k], y0[k], x1[k], y1[k]});
-  s.randomField = v.scalar<std::int64_t>(PERISTEP_VR_MATERIAL_FIELD) == PERISTEP_MATERIAL_KL_FIELD;
+  s.material = kindOf(kMaterialFieldValues, v.scalar<std::int64_t>(PERISTEP_VR_MATERIAL_FIELD), "material field");
   s.model = kindOf(kSpecimenModelValues, v.scalar<std::int64_t>(PERISTEP_VR_SPECIMEN_MODEL), "specimen model");
   // Per side: the grip's enumeration, its displacement (x, y) and its velocity (x, y) at loadFactor 1.
   const fmi3ValueReference grips[4][5] = {

@@ -23,10 +23,10 @@ constexpr fmi3ValueReference kNx = PERISTEP_VR_NX, kNy = PERISTEP_VR_NY, kModes 
 std::vector<fmi3ValueReference> image() { return {kNy, kNx}; }
 
 // Which input drives an output (component/scenes/*_runner.cpp): loadFactor the elastic scenes, the KL
-// plate and the dynamic scenes 5-7; loadDisplacement the glass-ceramic plate.
+// plate, the dynamic scenes 5-7 and the specimen; loadDisplacement the glass-ceramic plate (a specimen
+// preset, so the specimen's outputs depend on both).
 std::vector<fmi3ValueReference> onBothLoads() { return {PERISTEP_VR_LOAD_FACTOR, PERISTEP_VR_LOAD_DISPLACEMENT}; }
 std::vector<fmi3ValueReference> onLoadFactor() { return {PERISTEP_VR_LOAD_FACTOR}; }
-std::vector<fmi3ValueReference> onLoadDisplacement() { return {PERISTEP_VR_LOAD_DISPLACEMENT}; }
 std::vector<fmi3ValueReference> onNoInput() { return {}; }  // fixed once the scene is built
 
 std::vector<Variable> makeTable() {
@@ -189,49 +189,49 @@ std::vector<Variable> makeTable() {
        .dependencies = onNoInput()},
       {.name = "reactionLeftX", .vr = PERISTEP_VR_REACTION_LEFT_X, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Specimen scene: x-force of the left grip on the specimen per unit thickness (0 when "
-                      "free)",
-       .unit = "N/m", .dependencies = onLoadFactor()},
+       .description = "Specimen and glassCeramic scenes: x-force of the left grip on the specimen per "
+                      "unit thickness (0 when free)",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "reactionLeftY", .vr = PERISTEP_VR_REACTION_LEFT_Y, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Specimen scene: y-force of the left grip on the specimen per unit thickness (0 when "
-                      "free)",
-       .unit = "N/m", .dependencies = onLoadFactor()},
+       .description = "Specimen and glassCeramic scenes: y-force of the left grip on the specimen per "
+                      "unit thickness (0 when free)",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "reactionRightX", .vr = PERISTEP_VR_REACTION_RIGHT_X, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Specimen scene: x-force of the right grip on the specimen per unit thickness (0 when "
-                      "free)",
-       .unit = "N/m", .dependencies = onLoadFactor()},
+       .description = "Specimen and glassCeramic scenes: x-force of the right grip on the specimen per "
+                      "unit thickness (0 when free)",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "reactionRightY", .vr = PERISTEP_VR_REACTION_RIGHT_Y, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Specimen scene: y-force of the right grip on the specimen per unit thickness (0 when "
-                      "free)",
-       .unit = "N/m", .dependencies = onLoadFactor()},
+       .description = "Specimen and glassCeramic scenes: y-force of the right grip on the specimen per "
+                      "unit thickness (0 when free)",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "reactionBottomX", .vr = PERISTEP_VR_REACTION_BOTTOM_X, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Specimen scene: x-force of the bottom grip on the specimen per unit thickness (0 when "
-                      "free)",
-       .unit = "N/m", .dependencies = onLoadFactor()},
+       .description = "Specimen and glassCeramic scenes: x-force of the bottom grip on the specimen per "
+                      "unit thickness (0 when free)",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "reactionBottomY", .vr = PERISTEP_VR_REACTION_BOTTOM_Y, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Specimen scene: y-force of the bottom grip on the specimen per unit thickness (0 when "
-                      "free)",
-       .unit = "N/m", .dependencies = onLoadFactor()},
+       .description = "Specimen and glassCeramic scenes: y-force of the bottom grip on the specimen per "
+                      "unit thickness (0 when free)",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "reactionTopX", .vr = PERISTEP_VR_REACTION_TOP_X, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Specimen scene: x-force of the top grip on the specimen per unit thickness (0 when "
-                      "free)",
-       .unit = "N/m", .dependencies = onLoadFactor()},
+       .description = "Specimen and glassCeramic scenes: x-force of the top grip on the specimen per "
+                      "unit thickness (0 when free)",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "reactionTopY", .vr = PERISTEP_VR_REACTION_TOP_Y, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Specimen scene: y-force of the top grip on the specimen per unit thickness (0 when "
-                      "free)",
-       .unit = "N/m", .dependencies = onLoadFactor()},
+       .description = "Specimen and glassCeramic scenes: y-force of the top grip on the specimen per "
+                      "unit thickness (0 when free)",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "reactionForce", .vr = PERISTEP_VR_REACTION_FORCE, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Force per unit thickness of the top collar on the specimen (glass-ceramic); 0 where the "
-                      "scene defines none",
-       .unit = "N/m", .dependencies = onLoadDisplacement()},
+       .description = "y-force per unit thickness of the top collar on the specimen (glass-ceramic scene and "
+                      "specimens of glass-ceramic material); 0 where the scene defines none",
+       .unit = "N/m", .dependencies = onBothLoads()},
       {.name = "crackLength", .vr = PERISTEP_VR_CRACK_LENGTH, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "Crack length grown by loading, from broken bonds (glass-ceramic) or from the advance of "
@@ -253,8 +253,9 @@ std::vector<Variable> makeTable() {
        .unit = "J/m", .dependencies = onBothLoads()},
       {.name = "toughnessKIC", .vr = PERISTEP_VR_TOUGHNESS_KIC, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Fracture toughness K_IC from 000:(5.2)-(5.3) (glass-ceramic); 0 otherwise", .unit = "Pa.m^0.5",
-       .dependencies = onLoadDisplacement()},
+       .description = "Fracture toughness K_IC from 000:(5.2)-(5.3) (glass-ceramic scene and specimens of "
+                      "glass-ceramic material); 0 otherwise",
+       .unit = "Pa.m^0.5", .dependencies = onBothLoads()},
       {.name = "errorL2", .vr = PERISTEP_VR_ERROR_L2, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "L2 error of the displacement against the scene's exact solution; 0 without one",
@@ -315,7 +316,8 @@ std::vector<Variable> makeTable() {
       {.name = "materialField", .vr = PERISTEP_VR_MATERIAL_FIELD, .type = T::Enumeration,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: materialYoungsModulus as given, or times a Karhunen-Loeve random factor of "
-                      "mean 1 drawn from xi (nModes coordinates) as in the KL plate",
+                      "mean 1 drawn from xi (nModes coordinates) as in the KL plate, or the glass-ceramic of scene "
+                      "glassCeramic",
        .declaredType = "PeriStep.MaterialField", .start = "1"},
       {.name = "materialPoissonRatio", .vr = PERISTEP_VR_MATERIAL_POISSON_RATIO, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
@@ -549,10 +551,16 @@ const std::vector<EnumerationType>& enumerationTypes() {
   static const std::vector<EnumerationType> types{
       {"PeriStep.Scene", "Built-in scenes", enumerationItems(kSceneValues, kSceneOptions)},
       {"PeriStep.MaterialField",
-       "What the specimen's Young's modulus map becomes",
+       "Where the specimen's material comes from",
        {{"map", PERISTEP_MATERIAL_MAP, "The map as given"},
         {"klField", PERISTEP_MATERIAL_KL_FIELD,
-         "The map times E0 (1 + g) or E0 exp(g - var/2) with E0 = 1, g the KL field of xi (fieldTransform)"}}},
+         "The map times E0 (1 + g) or E0 exp(g - var/2) with E0 = 1, g the KL field of xi (fieldTransform)"},
+        {"glassCeramic", PERISTEP_MATERIAL_GLASS_CERAMIC,
+         "The glass-ceramic of scene glassCeramic on every point, collar included: crystals at crystalFraction "
+         "placed from seed, or the PCA field of pcaRealizations microstructures at xi; the phases' "
+         "glass/crystal Young's modulus and fracture energy, poissonRatio; materialYoungsModulus marks Void "
+         "only. Quasi-static model; crackLength, toughnessKIC, fractureEnergy and reactionForce are measured "
+         "as in glassCeramic, from the end (crackX1, crackY1) of pre-crack 0 towards +x"}}},
       {"PeriStep.GamutMaterial",
        "Ramberg-Osgood materials of paper 002 Sec. 4.2",
        {{"material1", PERISTEP_GAMUT_MATERIAL_1, "Material 1: E 71.6 GPa, sigma_y 538.6 MPa, sigma_f 665.8 MPa"},

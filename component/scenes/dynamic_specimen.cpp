@@ -26,7 +26,7 @@ DynamicScene makeDynamicSpecimen(const SceneParameters& p) {
   const StateBasedInput in = dynamicMaterial(p);
   const double E0 = 3.0 * in.bulkModulus * (1.0 - 2.0 * in.poissonRatio);  // 001 Table 1's relation
   std::vector<double> factor(c.size(), 1.0);
-  if (s.randomField) factor = klMaterial(*sharedKlField(c, p), 1.0, p);
+  if (s.material == SpecimenMaterial::KlField) factor = klMaterial(*sharedKlField(c, p), 1.0, p);
   StateBasedBondOptions bo;
   bo.horizon = c.delta;
   bo.cuts = scene.cracks;

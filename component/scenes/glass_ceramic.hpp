@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "fracture/toughness.hpp"
+#include "scenes/crack_toughness.hpp"
+#include "scenes/fracture_specimen.hpp"
 #include "solvers/quasi_static_fracture.hpp"
 
 namespace peristep {
@@ -28,52 +30,46 @@ struct GlassCeramicSpec {
   std::vector<double> crystalField;
 };
 
+// The scene as a specimen (scenes/specimen.hpp): bottom and top grips held, moved by -U_D and +U_D in y
+// (x held), left and right free, the pre-crack along y = 0 from beyond the left edge (x = -Lx/2 - 2 delta)
+// to its tip, the material generated (SpecimenMaterial::GlassCeramic), the grips driven by loadDisplacement.
+SpecimenSpec glassCeramicPreset(const GridSpec& grid, double preCrackLength);
+
+// bench/glass_ceramic's and the tests' face of that specimen.
 class GlassCeramicSpecimen {
  public:
   explicit GlassCeramicSpecimen(const GlassCeramicSpec& spec);
 
   // Opening U_D: the top collar moves by (0, +U_D), the bottom collar by (0, -U_D) (x held).
-  LoadStepReport advance(double openingDisplacement);
+  LoadStepReport advance(double openingDisplacement) { return b_.fracture->advance(openingDisplacement); }
 
-  const QuasiStaticFracture& solver() const { return *fracture_; }
-  double measuredCrystalFraction() const { return fraction_; }
+  const QuasiStaticFracture& solver() const { return *b_.fracture; }
+  double measuredCrystalFraction() const { return toughness_->field().fraction; }
   // Fields on the domain points, image order.
-  std::vector<double> ux() const;
-  std::vector<double> uy() const;
+  std::vector<double> ux() const { return onDomain(0); }
+  std::vector<double> uy() const { return onDomain(1); }
   std::vector<double> damage() const;
   std::vector<double> youngsModulus() const;
   // y-force of the top collar on the specimen per unit thickness [N/m].
   double reactionForce() const;
-  // Bonds broken by loading that belong to the crack grown from the pre-crack tip: chains of broken bonds
-  // whose midpoints lie within 1.5 h of each other, started at the tip. Damage elsewhere (e.g. at the
-  // corners where the clamped edges meet the free ones) does not count towards the crack.
-  std::vector<std::size_t> mainCrackBonds() const;
-  // Length of the main crack along its centre line (fracture/toughness.hpp), from the pre-crack tip.
-  double crackLength() const;
-  // That length shared among the phases by the broken bonds (000 Sec. 5: L1, L2, L_i).
-  CrackShares crackShares() const;
-  // Projected crack length W along x, from the pre-crack tip to the farthest bond of the main crack.
-  double projectedCrackLength() const;
-  double energyReleaseRate() const;  // 000:(5.2), fracture energy per bond (fracture/toughness.hpp)
-  double toughnessKIC() const;       // 000:(5.3)
-  bool crackReachedRightEdge() const;
+  // The crack's measurements (scenes/crack_toughness.hpp).
+  std::vector<std::size_t> mainCrackBonds() const { return toughness_->mainCrackBonds(); }
+  double crackLength() const { return toughness_->crackLength(); }
+  CrackShares crackShares() const { return toughness_->crackShares(); }
+  double projectedCrackLength() const { return toughness_->projectedCrackLength(); }
+  double energyReleaseRate() const { return toughness_->energyReleaseRate(); }
+  double toughnessKIC() const { return toughness_->toughnessKIC(); }
+  bool crackReachedRightEdge() const { return toughness_->crackReachedRightEdge(); }
 
-  std::vector<std::uint8_t> saveState() const { return fracture_->saveState(); }
-  void restoreState(std::span<const std::uint8_t> b) { fracture_->restoreState(b); }
-  void onSubIteration(std::function<void(const LoadStepReport&)> hook) { fracture_->onSubIteration(std::move(hook)); }
+  std::vector<std::uint8_t> saveState() const { return b_.fracture->saveState(); }
+  void restoreState(std::span<const std::uint8_t> b) { b_.fracture->restoreState(b); }
+  void onSubIteration(std::function<void(const LoadStepReport&)> hook) { b_.fracture->onSubIteration(std::move(hook)); }
 
  private:
-  std::vector<double> domainValues(const std::vector<double>& perPoint) const;
-  // W and the centre-line length of a crack given by its bonds (each query searches the main crack once).
-  double projectedLength(const std::vector<std::size_t>& crack) const;
-  double centreLength(const std::vector<std::size_t>& crack, double W) const;
+  std::vector<double> onDomain(int component) const;
 
-  GlassCeramicSpec spec_;
-  std::shared_ptr<const LpsDiscretization> disc_;
-  std::vector<std::uint8_t> crystal_, topCollar_;
-  std::vector<double> E_, G_;
-  double fraction_ = 0, tipX_ = 0;
-  std::unique_ptr<QuasiStaticFracture> fracture_;
+  FractureSpecimen b_;
+  std::unique_ptr<CrackToughness> toughness_;
 };
 
 }  // namespace peristep

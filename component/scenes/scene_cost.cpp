@@ -132,7 +132,7 @@ CostEstimate estimateSetUp(const SceneParameters& p) {
     parts.push_back(gamutBar(p));
   } else {
     parts.push_back(lpsSetUp(p.grid));
-    if (p.scene == SceneId::GlassCeramic)
+    if (usesGlassCeramic(p))
       parts.push_back(p.pcaRealizations > 0 ? pca(p) : microstructure(p, 1));
     if (usesKlField(p)) parts.push_back(klField(p));
   }
@@ -157,7 +157,7 @@ void checkSetUpLimits(const SceneParameters& p) {
       p.scene == SceneId::GamutBar
           ? std::string("use fewer gamutBonds (and nx = ny = 2: the bar has no image)")
           : "use a coarser grid (nx, ny), a smaller deltaOverH" +
-                std::string(p.scene == SceneId::GlassCeramic ? ", a smaller plate or fewer pcaRealizations" : "");
+                std::string(usesGlassCeramic(p) ? ", a smaller plate or fewer pcaRealizations" : "");
   if (l.memoryBytes > 0 && e.bytes > l.memoryBytes)
     throw InvalidInput("the scene set-up would need about " + numberText(e.bytes, 2) + " bytes of memory (mostly " +
                        e.mostMemory + ") but memoryBudget = " + numberText(l.memoryBytes, 2) + " bytes; " + change +

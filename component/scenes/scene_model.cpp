@@ -7,19 +7,34 @@
 #include "core/errors.hpp"
 #include "models/lps_material.hpp"
 #include "scenes/exact_moments.hpp"
+#include "scenes/glass_ceramic.hpp"
+#include "scenes/glass_ceramic_material.hpp"
 #include "scenes/scene_cost.hpp"
 #include "scenes/scene_runner.hpp"
 
 namespace peristep {
+
+SceneParameters withPreset(const SceneParameters& p) {
+  if (p.scene != SceneId::GlassCeramic) return p;
+  SceneParameters q = p;
+  q.specimen = glassCeramicPreset(p.grid, GlassCeramicSpec{}.preCrackLength);
+  return q;
+}
+
+bool usesGlassCeramic(const SceneParameters& p) {
+  return p.scene == SceneId::GlassCeramic ||
+         (p.scene == SceneId::Specimen && p.specimen.material == SpecimenMaterial::GlassCeramic);
+}
 
 std::size_t randomCoordinates(const SceneParameters& p) {
   switch (p.scene) {
     case SceneId::Smooth: return 1;
     case SceneId::Composite:
     case SceneId::InterfaceCrack: return 2;
-    case SceneId::GlassCeramic: return p.pcaRealizations > 0 ? p.xi.size() : 0;
     case SceneId::KlPlate: return p.xi.size();
-    case SceneId::Specimen: return p.specimen.randomField ? p.xi.size() : 0;
+    case SceneId::GlassCeramic:
+    case SceneId::Specimen:  // the KL factor's coordinates, or the PCA field's (glass-ceramic material)
+      return usesKlField(p) || (usesGlassCeramic(p) && p.pcaRealizations > 0) ? p.xi.size() : 0;
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches:
@@ -35,7 +50,7 @@ bool isDynamic(const SceneParameters& p) {
 }
 
 bool usesKlField(const SceneParameters& p) {
-  return p.scene == SceneId::KlPlate || (p.scene == SceneId::Specimen && p.specimen.randomField);
+  return p.scene == SceneId::KlPlate || (p.scene == SceneId::Specimen && p.specimen.material == SpecimenMaterial::KlField);
 }
 
 XiDistribution xiDistribution(const SceneParameters& p, std::size_t k) {
@@ -52,8 +67,8 @@ void validate(const SceneParameters& p) {
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p))
     validateDynamicScene(p);  // scenes 5-7: cell-centred lattices, h = Lx/nx, not Lx/(nx-1)
-  else if (p.scene == SceneId::Specimen)
-    validate(p.specimen, p.grid);
+  else if (p.scene == SceneId::Specimen || p.scene == SceneId::GlassCeramic)
+    validate(withPreset(p).specimen, p.grid);
   else if (p.scene != SceneId::GamutBar)  // the bar is not on the plate grid (GamutBar checks its spec)
     validate(p.grid);
   validateElastic(1.0, p.poissonRatio);
@@ -70,7 +85,8 @@ void validate(const SceneParameters& p) {
     require(std::isfinite(p.fieldStd) && p.fieldStd > 0,
             "fieldStd must be positive and finite (got " + std::to_string(p.fieldStd) + ")");
   }
-  if (p.scene == SceneId::GlassCeramic && p.pcaRealizations > 0)
+  if (usesGlassCeramic(p)) validate(phaseConstants(p));
+  if (usesGlassCeramic(p) && p.pcaRealizations > 0)
     require(p.pcaRealizations > p.xi.size(), "the PCA field needs more realizations (pcaRealizations = " +
                                                  std::to_string(p.pcaRealizations) + ") than modes (nModes = " +
                                                  std::to_string(p.xi.size()) + ")");
@@ -108,7 +124,7 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
     case SceneId::Smooth:
     case SceneId::Composite: return makeElasticRunner(p);
     case SceneId::InterfaceCrack: return makeInterfaceCrackRunner(p);
-    case SceneId::GlassCeramic: return makeGlassCeramicRunner(p);
+    case SceneId::GlassCeramic: return makeSpecimenRunner(withPreset(p));
     case SceneId::KlPlate: return makeKlPlateRunner(p);
     case SceneId::Specimen: return isDynamic(p) ? makeDynamicRunner(p) : makeSpecimenRunner(p);
     case SceneId::GamutBar: return makeGamutBarRunner(p);

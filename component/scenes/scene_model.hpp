@@ -85,6 +85,11 @@ struct SceneParameters {
 bool isDynamic(const SceneParameters& p);
 // The KL plate and a specimen with a random field draw a Karhunen-Loeve field from xi.
 bool usesKlField(const SceneParameters& p);
+// The glassCeramic scene and a specimen of glass-ceramic material generate it (scenes/glass_ceramic_material.hpp).
+bool usesGlassCeramic(const SceneParameters& p);
+// A built-in scene that is a specimen gets the specimen variables of its preset (scenes/glass_ceramic.hpp);
+// other scenes come back unchanged.
+SceneParameters withPreset(const SceneParameters& p);
 
 // What drives a step: the manufactured scenes and Test 3 scale their boundary data by loadFactor; the
 // glass-ceramic plate is opened by loadDisplacement (top collar +U_D, bottom collar -U_D).

@@ -28,42 +28,52 @@ bool materialAlong(const std::vector<double>& E, const GridSpec& g, Side side) {
 void validate(const SpecimenSpec& s, const GridSpec& g) {
   validate(g);
   const std::size_t n = g.nx * g.ny;
-  const auto length = [&](const std::vector<double>& map, const char* name) {
-    require(map.size() == n, std::string(name) + " has " + std::to_string(map.size()) + " values for the " +
-                                 std::to_string(g.ny) + " x " + std::to_string(g.nx) + " grid (ny x nx = " +
-                                 std::to_string(n) + ")");
-  };
-  length(s.youngsModulus, "materialYoungsModulus");
-  length(s.poissonRatio, "materialPoissonRatio");
-  length(s.fractureEnergy, "materialFractureEnergy");
-  length(s.density, "materialDensity");
-  bool anyMaterial = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::string at = "[" + std::to_string(i) + "] (x, y index " + std::to_string(i % g.nx) + ", " +
-                           std::to_string(i / g.nx) + ")";
-    require(std::isfinite(s.youngsModulus[i]) && s.youngsModulus[i] >= 0,
-            "materialYoungsModulus" + at + " must be >= 0 (0: Void), got " + text(s.youngsModulus[i]));
-    require(std::isfinite(s.fractureEnergy[i]) && s.fractureEnergy[i] > 0,
-            "materialFractureEnergy" + at + " must be positive, got " + text(s.fractureEnergy[i]));
-    require(std::isfinite(s.density[i]) && s.density[i] > 0,
-            "materialDensity" + at + " must be positive, got " + text(s.density[i]));
-    require(admissiblePoissonRatio(s.poissonRatio[i]),
-            "materialPoissonRatio" + at + " must lie in (-1, 0.5), got " + text(s.poissonRatio[i]));
-    anyMaterial = anyMaterial || s.youngsModulus[i] > 0;
+  const bool generated = s.material == SpecimenMaterial::GlassCeramic;
+  // A generated material needs no maps; maps that are given are checked all the same.
+  if (!generated || !s.youngsModulus.empty()) {
+    const auto length = [&](const std::vector<double>& map, const char* name) {
+      require(map.size() == n, std::string(name) + " has " + std::to_string(map.size()) + " values for the " +
+                                   std::to_string(g.ny) + " x " + std::to_string(g.nx) + " grid (ny x nx = " +
+                                   std::to_string(n) + ")");
+    };
+    length(s.youngsModulus, "materialYoungsModulus");
+    length(s.poissonRatio, "materialPoissonRatio");
+    length(s.fractureEnergy, "materialFractureEnergy");
+    length(s.density, "materialDensity");
+    bool anyMaterial = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string at = "[" + std::to_string(i) + "] (x, y index " + std::to_string(i % g.nx) + ", " +
+                             std::to_string(i / g.nx) + ")";
+      require(std::isfinite(s.youngsModulus[i]) && s.youngsModulus[i] >= 0,
+              "materialYoungsModulus" + at + " must be >= 0 (0: Void), got " + text(s.youngsModulus[i]));
+      require(std::isfinite(s.fractureEnergy[i]) && s.fractureEnergy[i] > 0,
+              "materialFractureEnergy" + at + " must be positive, got " + text(s.fractureEnergy[i]));
+      require(std::isfinite(s.density[i]) && s.density[i] > 0,
+              "materialDensity" + at + " must be positive, got " + text(s.density[i]));
+      require(admissiblePoissonRatio(s.poissonRatio[i]),
+              "materialPoissonRatio" + at + " must lie in (-1, 0.5), got " + text(s.poissonRatio[i]));
+      anyMaterial = anyMaterial || s.youngsModulus[i] > 0;
+    }
+    require(anyMaterial, "materialYoungsModulus is 0 (Void) everywhere: the specimen has no material");
   }
-  require(anyMaterial, "materialYoungsModulus is 0 (Void) everywhere: the specimen has no material");
+  require(!generated || s.model == SpecimenModel::QuasiStatic,
+          "materialField glassCeramic is for specimenModel quasiStatic (the dynamic model reads the maps)");
   require(g.delta() < std::min(g.Lx, g.Ly),
           "the horizon deltaOverH * h = " + text(g.delta()) + " m is not smaller than the plate (Lx = " + text(g.Lx) +
               " m, Ly = " + text(g.Ly) + " m): use a smaller deltaOverH or a finer grid");
-  const double X = 0.5 * g.Lx, Y = 0.5 * g.Ly;
+  // A pre-crack may reach into the collar (2 delta), e.g. to cut an edge notch's bonds beyond the edge,
+  // but its end (x1, y1), where it grows from, lies in the plate.
+  const double X = 0.5 * g.Lx, Y = 0.5 * g.Ly, collar = 2 * g.delta();
   for (std::size_t k = 0; k < s.cracks.size(); ++k) {
     const Segment& c = s.cracks[k];
-    const auto inside = [&](double x, double y) { return std::abs(x) <= X && std::abs(y) <= Y; };
+    const auto inside = [&](double x, double y, double margin) {
+      return std::abs(x) <= X + margin && std::abs(y) <= Y + margin;
+    };
     require(std::isfinite(c.x0) && std::isfinite(c.y0) && std::isfinite(c.x1) && std::isfinite(c.y1) &&
-                inside(c.x0, c.y0) && inside(c.x1, c.y1),
+                inside(c.x0, c.y0, collar) && inside(c.x1, c.y1, 0),
             "pre-crack " + std::to_string(k) + " from (" + text(c.x0) + ", " + text(c.y0) + ") to (" + text(c.x1) +
                 ", " + text(c.y1) + ") m leaves the plate [" + text(-X) + ", " + text(X) + "] x [" + text(-Y) +
-                ", " + text(Y) + "] m");
+                ", " + text(Y) + "] m (its start may lie in the collar, 2 delta = " + text(collar) + " m wide)");
   }
   bool anyHeld = false;
   for (std::size_t k = 0; k < 4; ++k) {
@@ -73,7 +83,7 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
     const std::string name = std::string("the ") + kSideNames[k] + " grip";
     require(std::isfinite(grip.ux) && std::isfinite(grip.uy), name + " needs a finite displacement");
     require(std::isfinite(grip.vx) && std::isfinite(grip.vy), name + " needs a finite velocity");
-    require(materialAlong(s.youngsModulus, g, static_cast<Side>(k)),
+    require(s.youngsModulus.empty() || materialAlong(s.youngsModulus, g, static_cast<Side>(k)),
             name + " holds a side along which materialYoungsModulus is 0 (Void): it would hold nothing");
   }
   require(anyHeld, "every grip is free: hold at least one side, or the specimen floats");
@@ -97,7 +107,7 @@ PointCloud specimenCloud(const SpecimenSpec& s, const GridSpec& g) {
   std::vector<std::size_t> domain;
   for (std::size_t q = 0; q < c.size(); ++q) {
     const ImageSource n = imageSource(c, q);
-    const bool voidMap = s.youngsModulus[n.image] == 0;
+    const bool voidMap = isVoidInMap(s, n.image);
     if (voidMap || (n.inCollar && !s.grips[static_cast<std::size_t>(n.side)].held)) c.region[q] = Region::Void;
     else if (!n.inCollar) domain.push_back(q);
   }

@@ -30,6 +30,17 @@ inline constexpr std::array<Option<SpecimenModel>, 2> kSpecimenModelOptions{{
 enum class Side { Left = 0, Right = 1, Bottom = 2, Top = 3 };
 inline constexpr std::array<const char*, 4> kSideNames{"left", "right", "bottom", "top"};
 
+// Where the material of the points comes from: the maps; the maps' Young's modulus times a Karhunen-Loeve
+// factor of mean 1 from the scene's xi, covariance, correlation length, standard deviation and transform
+// (scenes/kl_material.hpp), Void staying Void; or the glass-ceramic of 000 Sec. 5 on every point of the
+// cloud, collar included (scenes/glass_ceramic_material.hpp: the microstructure of `seed` at
+// crystalFraction, or its PCA field with pcaRealizations > 0), where a map given marks Void only.
+enum class SpecimenMaterial { Maps, KlField, GlassCeramic };
+
+// Which input moves the held grips: loadFactor (the specimen's own), or loadDisplacement [m] (the
+// glassCeramic scene's U_D; its grips' displacements are then per metre of U_D).
+enum class SpecimenLoad { LoadFactor, LoadDisplacement };
+
 // A held side's collar moves rigidly: by load * (ux, uy) in the quasi-static model, at the velocity
 // load * (vx, vy) in the dynamic one. A free side has no collar (traction-free).
 struct Grip {
@@ -45,14 +56,19 @@ struct SpecimenSpec {
   std::vector<double> density;  // [kg/m^3], read by the dynamic model
   std::vector<Segment> cracks;  // pre-cracks: bonds crossing one are broken from the start
   std::array<Grip, 4> grips{};  // by Side
-  // Young's modulus times the Karhunen-Loeve factor of mean 1 from the scene's xi, covariance, correlation
-  // length, standard deviation and transform (scenes/kl_material.hpp); Void stays Void.
-  bool randomField = false;
+  SpecimenMaterial material = SpecimenMaterial::Maps;
+  SpecimenLoad load = SpecimenLoad::LoadFactor;
 };
 
-// Throws InvalidInput naming the first inconsistency: a map of the wrong length, a negative or non-finite
-// modulus, a fracture energy or density <= 0, nu outside (-1, 0.5), a segment with an end outside the plate, a held
-// grip along a side where the map is Void, a horizon larger than the plate, no held grip.
+// Whether the map marks point `image` as Void (a glass-ceramic specimen may come without maps).
+inline bool isVoidInMap(const SpecimenSpec& s, std::size_t image) {
+  return !s.youngsModulus.empty() && s.youngsModulus[image] == 0;
+}
+
+// Throws InvalidInput naming the first inconsistency: a map of the wrong length (a glass-ceramic specimen
+// may have none), a negative or non-finite modulus, a fracture energy or density <= 0, nu outside (-1, 0.5),
+// a segment whose end leaves the plate or whose start lies beyond the collar, a held grip along a side where
+// the map is Void, a horizon larger than the plate, no held grip, a generated material with the dynamic model.
 void validate(const SpecimenSpec& s, const GridSpec& grid);
 
 // Where a point of the specimen's cloud (collar included) takes its material from: the nearest image

@@ -1,73 +1,64 @@
-// The importer's specimen behind the Runner face: the plate's cloud with a collar beside each held side,
-// Void where the material map is 0 (and beside free sides), the map's E (times a KL factor with a random
-// field), nu, G per point, bonds crossing a pre-crack broken, and the quasi-static fracture driver moving
-// the held collars by loadFactor.
+// The quasi-static specimen behind the Runner face (the importer's specimen and the glassCeramic scene, a
+// preset of it): the plate's cloud with a collar beside each held side, Void where the material map is 0
+// (and beside free sides), the material of the maps (times a KL factor with a random field) or the
+// glass-ceramic generator's, bonds crossing a pre-crack broken, and the quasi-static fracture driver moving
+// the held collars by the load input.
 #include "fracture/bond_state.hpp"
-#include "models/lps_material.hpp"
-#include "quadrature/optimization_weights.hpp"
+#include "scenes/crack_toughness.hpp"
+#include "scenes/fracture_specimen.hpp"
+#include "scenes/glass_ceramic_material.hpp"
 #include "scenes/kl_material.hpp"
 #include "scenes/scene_runner.hpp"
-#include "scenes/specimen.hpp"
-#include "solvers/quasi_static_fracture.hpp"
 
 namespace peristep {
 namespace {
 
-struct Built {
-  std::shared_ptr<const LpsDiscretization> disc;
-  std::vector<double> E;  // per point [Pa]
-  std::array<std::vector<std::uint8_t>, 4> collars;
-  std::unique_ptr<QuasiStaticFracture> fracture;
-  double retainedVariance = 1.0;  // of the KL modes, with a random field
-};
-
-Built build(const SceneParameters& p) {
+// The maps' material at each point's nearest image point (collar included), E times the KL factor with
+// a random field; E = 0 on Void.
+PointMaterial mapMaterial(const PointCloud& c, const SceneParameters& p, double& retainedVariance) {
   const SpecimenSpec& s = p.specimen;
-  Built b;
-  LpsDiscretization d;
-  d.cloud = specimenCloud(s, p.grid);
-  const PointCloud& c = d.cloud;
-  d.neighbours = findNeighbours(c, c.delta);
-  d.dofs = numberDofs(c, d.neighbours);
-  // Weights on the full neighbourhood, Void included, as for the glass-ceramic plate: the broken-bond
-  // weights of 000:(3.18) then integrate over the part of the ball outside the material.
-  d.weights = optimizationWeights(c, d.neighbours, std::vector<char>(c.size(), 1));
-
   std::vector<double> factor(c.size(), 1.0);
-  if (s.randomField) {
+  if (s.material == SpecimenMaterial::KlField) {
     const std::shared_ptr<const KlField> field = sharedKlField(c, p);
     factor = klMaterial(*field, 1.0, p);
-    b.retainedVariance = field->retainedVarianceFraction();
+    retainedVariance = field->retainedVarianceFraction();
   }
-  FractureMaterial mat;
-  std::vector<double> unit(2 * c.size(), 0.0);
-  for (auto& m : b.collars) m.assign(c.size(), 0);
+  PointMaterial m;
   for (std::size_t q = 0; q < c.size(); ++q) {
-    const ImageSource n = imageSource(c, q);
-    const double E = c.isVoid(q) ? 0.0 : s.youngsModulus[n.image] * factor[q];
-    const Lame l = planeStrain(E, s.poissonRatio[n.image]);
-    b.E.push_back(E);
-    mat.lambda.push_back(l.lambda);
-    mat.mu.push_back(l.mu);
-    mat.fractureEnergy.push_back(s.fractureEnergy[n.image]);
-    if (c.region[q] != Region::Dirichlet) continue;
-    const auto k = static_cast<std::size_t>(n.side);
-    b.collars[k][q] = 1;
-    unit[2 * q] = s.grips[k].ux;
-    unit[2 * q + 1] = s.grips[k].uy;
+    const std::size_t image = imageSource(c, q).image;
+    m.E.push_back(c.isVoid(q) ? 0.0 : s.youngsModulus[image] * factor[q]);
+    m.nu.push_back(s.poissonRatio[image]);
+    m.G.push_back(s.fractureEnergy[image]);
   }
-  BondState bonds = makeBondState(c, d.neighbours, mat.lambda, mat.mu, mat.fractureEnergy);
-  for (const Segment& crack : s.cracks)
-    if (crack.x0 != crack.x1 || crack.y0 != crack.y1) breakCrossing(bonds, c, d.neighbours, crack);
-  b.disc = std::make_shared<const LpsDiscretization>(std::move(d));
-  b.fracture = std::make_unique<QuasiStaticFracture>(b.disc, std::move(mat), std::move(bonds), std::move(unit),
-                                                     p.linearSolver);
-  return b;
+  return m;
 }
 
 class SpecimenRunner final : public Runner {
  public:
-  explicit SpecimenRunner(const SceneParameters& p) : b_(build(p)) {
+  explicit SpecimenRunner(const SceneParameters& p) : load_(p.specimen.load) {
+    const SpecimenSpec& s = p.specimen;
+    PointCloud cloud = specimenCloud(s, p.grid);
+    if (s.material == SpecimenMaterial::GlassCeramic) {
+      CrystalField field = crystalField(cloud, p);
+      const PhaseConstants phases = phaseConstants(p);
+      const PointMaterial m = phaseMaterial(cloud, field.R, phases);
+      b_ = buildFractureSpecimen(s, std::move(cloud), m, p.linearSolver);
+      // 000 Sec. 5's measurements, of the crack grown from the first pre-crack's end.
+      const Segment tip = s.cracks.empty() ? Segment{} : s.cracks.front();
+      const double tipX = s.cracks.empty() ? -0.5 * p.grid.Lx : tip.x1;
+      toughness_ = std::make_unique<CrackToughness>(*b_.fracture, tipX, tip.y1, 0.5 * p.grid.Lx, m.G,
+                                                    std::move(field), phases);
+    } else {
+      const PointMaterial m = mapMaterial(cloud, p, retainedVariance_);
+      b_ = buildFractureSpecimen(s, std::move(cloud), m, p.linearSolver);
+    }
+    // Inside a load step the crack may run for hundreds of sub-iterations at one load: report each, and
+    // the bonds broken so far in the step (open-ended counts: total 0).
+    if (p.progress)
+      b_.fracture->onSubIteration([hook = p.progress](const LoadStepReport& r) {
+        hook("subIterations", static_cast<std::uint64_t>(r.subIterations), 0);
+        hook("brokenBonds", r.newlyBroken, 0);
+      });
     // The outputs cover every image point: the material ones are the cloud's domain, Void ones read 0.
     output_ = b_.disc->cloud;
     output_.domain.clear();
@@ -75,7 +66,9 @@ class SpecimenRunner final : public Runner {
       if (output_.image[q] >= 0) output_.domain.push_back(q);
   }
   const PointCloud& cloud() const override { return output_; }
-  void advance(const SceneInputs& in) override { b_.fracture->advance(in.loadFactor); }
+  void advance(const SceneInputs& in) override {
+    b_.fracture->advance(load_ == SpecimenLoad::LoadDisplacement ? in.loadDisplacement : in.loadFactor);
+  }
   std::vector<double> ux() const override { return onImage(b_.fracture->displacement(), 2, 0); }
   std::vector<double> uy() const override { return onImage(b_.fracture->displacement(), 2, 1); }
   std::vector<double> youngsModulus() const override { return onImage(b_.E, 1, 0); }
@@ -94,7 +87,24 @@ class SpecimenRunner final : public Runner {
   std::array<double, 2> gripReaction(Side side) const override {
     return b_.fracture->collarForce(b_.collars[static_cast<std::size_t>(side)]);
   }
-  double retainedVariance() const override { return b_.retainedVariance; }
+  // The glass-ceramic measurements (000 Sec. 5); the maps' specimens report their grips' reactions only.
+  double reactionForce() const override { return toughness_ ? gripReaction(Side::Top)[1] : 0.0; }
+  double crackLength() const override { return toughness_ ? toughness_->crackLength() : 0.0; }
+  double fractureEnergy() const override {
+    return toughness_ ? toughness_->energyReleaseRate() * toughness_->projectedCrackLength() : 0.0;
+  }
+  double toughnessKIC() const override { return toughness_ ? toughness_->toughnessKIC() : 0.0; }
+  bool separated() const override { return toughness_ && toughness_->crackReachedRightEdge(); }
+  std::vector<double> xiScales() const override {  // PCA: xi_k = sqrt(lambda_k) eta_k (random/microstructure_pca.hpp)
+    std::vector<double> scales;
+    if (const PcaModes* pca = toughness_ ? toughness_->field().pca.get() : nullptr)
+      for (Eigen::Index k = 0; k < pca->variances.size(); ++k) scales.push_back(std::sqrt(pca->variances[k]));
+    return scales;
+  }
+  double retainedVariance() const override {
+    const PcaModes* pca = toughness_ ? toughness_->field().pca.get() : nullptr;
+    return pca ? pca->retainedFraction() : retainedVariance_;
+  }
   std::vector<std::uint8_t> saveState() const override { return b_.fracture->saveState(); }
   void restoreState(std::span<const std::uint8_t> bytes) override { b_.fracture->restoreState(bytes); }
 
@@ -106,7 +116,10 @@ class SpecimenRunner final : public Runner {
     return v;
   }
 
-  Built b_;
+  SpecimenLoad load_;
+  FractureSpecimen b_;
+  std::unique_ptr<CrackToughness> toughness_;  // glass-ceramic material only
+  double retainedVariance_ = 1.0;              // of the KL modes, with a random field
   PointCloud output_;
 };
 

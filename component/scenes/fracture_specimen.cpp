@@ -1,0 +1,49 @@
+#include "scenes/fracture_specimen.hpp"
+
+#include "core/timer.hpp"
+#include "fracture/bond_state.hpp"
+#include "models/lps_material.hpp"
+#include "quadrature/optimization_weights.hpp"
+
+namespace peristep {
+
+FractureSpecimen buildFractureSpecimen(const SpecimenSpec& s, PointCloud cloud, const PointMaterial& m,
+                                       LinearSolverKind solver, FactorizationReuse reuse, FactorPrecision zonePrecision) {
+  FractureSpecimen b;
+  LpsDiscretization d;
+  d.cloud = std::move(cloud);
+  const PointCloud& c = d.cloud;
+  Stopwatch clock;
+  d.neighbours = findNeighbours(c, c.delta);
+  d.dofs = numberDofs(c, d.neighbours);
+  d.neighbourSeconds = clock.lap();
+  // Weights on the full neighbourhood, Void points included: the broken-bond weights w^ of 000:(3.18)
+  // then integrate over the part of the ball outside the material.
+  d.weights = optimizationWeights(c, d.neighbours, std::vector<char>(c.size(), 1));
+  d.weightSeconds = clock.lap();
+
+  FractureMaterial mat;
+  std::vector<double> unit(2 * c.size(), 0.0);
+  for (auto& collar : b.collars) collar.assign(c.size(), 0);
+  for (std::size_t q = 0; q < c.size(); ++q) {
+    const Lame l = planeStrain(m.E[q], m.nu[q]);
+    mat.lambda.push_back(l.lambda);
+    mat.mu.push_back(l.mu);
+    mat.fractureEnergy.push_back(m.G[q]);
+    if (c.region[q] != Region::Dirichlet) continue;
+    const auto k = static_cast<std::size_t>(imageSource(c, q).side);
+    b.collars[k][q] = 1;
+    unit[2 * q] = s.grips[k].ux;
+    unit[2 * q + 1] = s.grips[k].uy;
+  }
+  BondState bonds = makeBondState(c, d.neighbours, mat.lambda, mat.mu, mat.fractureEnergy);
+  for (const Segment& crack : s.cracks)
+    if (crack.x0 != crack.x1 || crack.y0 != crack.y1) breakCrossing(bonds, c, d.neighbours, crack);
+  b.E = m.E;
+  b.disc = std::make_shared<const LpsDiscretization>(std::move(d));
+  b.fracture = std::make_unique<QuasiStaticFracture>(b.disc, std::move(mat), std::move(bonds), std::move(unit), solver,
+                                                     reuse, zonePrecision);
+  return b;
+}
+
+}  // namespace peristep
