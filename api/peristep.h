@@ -137,7 +137,13 @@ enum PeriStepValueReference {
   PERISTEP_VR_BAR_STRESS = 120,          /* Float64, Pa: end force over area */
   PERISTEP_VR_BAR_STRAIN = 121,          /* Float64: end displacement over length */
   PERISTEP_VR_CYCLIC_EXPONENT = 122,     /* Float64: n' of the cyclic protocol (0 until it has finished) */
-  PERISTEP_VR_CYCLIC_COEFFICIENT = 123   /* Float64, Pa: K' of the cyclic protocol (0 until it has finished) */
+  PERISTEP_VR_CYCLIC_COEFFICIENT = 123,  /* Float64, Pa: K' of the cyclic protocol (0 until it has finished) */
+
+  /* the learned LPS model of paper 003 predicting an MD fracture sample (PERISTEP_SCENE_LEARNED_FRACTURE) */
+  PERISTEP_VR_LEARNED_SAMPLE = 140,            /* Enumeration: enum PeriStepLearnedSample */
+  PERISTEP_VR_LEARNED_CRITICAL_STRETCH = 141,  /* Float64: s0 at h = 5 A (003: 0.11) */
+  PERISTEP_VR_PREDICTION_ERROR_U = 142,        /* Float64: displacement error against the MD frames so far */
+  PERISTEP_VR_PREDICTION_ERROR_DAMAGE = 143    /* Float64: damage error against the MD frames so far */
 };
 
 /* Values of the enumeration PeriStep.Scene (variable "scene") */
@@ -151,7 +157,15 @@ enum PeriStepScene {
   PERISTEP_SCENE_BENDING_TWO_NOTCHES = 7,  /* the same with two pre-cracks */
   PERISTEP_SCENE_KL_PLATE = 8,        /* plate with a Karhunen-Loeve random Young's modulus */
   PERISTEP_SCENE_SPECIMEN = 9,        /* the importer's specimen: material maps, pre-cracks, grips */
-  PERISTEP_SCENE_GAMUT_BAR = 10       /* 1D stochastic deformation-gamut bar (Desai, paper 002) */
+  PERISTEP_SCENE_GAMUT_BAR = 10,      /* 1D stochastic deformation-gamut bar (Desai, paper 002) */
+  PERISTEP_SCENE_LEARNED_FRACTURE = 11 /* learned LPS model predicting an MD fracture sample (You et al., 003) */
+};
+
+/* Values of the enumeration PeriStep.LearnedSample (variable "learnedSample", learnedFracture scene) */
+enum PeriStepLearnedSample {
+  PERISTEP_LEARNED_TRAINING = 1,     /* sample III, h = 5 A (20 x 20 points) */
+  PERISTEP_LEARNED_TEST = 2,         /* sample IV, h = 5 A (20 x 20 points) */
+  PERISTEP_LEARNED_TRAINING_FINE = 3 /* sample III, h = 3.17 A (31 x 31 points) */
 };
 
 /* Values of the enumeration PeriStep.GamutMaterial (variable "gamutMaterial", gamutBar scene) */

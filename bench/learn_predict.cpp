@@ -17,6 +17,7 @@
 #include "learning/data_sets.hpp"
 #include "learning/fracture_prediction.hpp"
 #include "learning/kernel_fit.hpp"
+#include "learning/md_fracture_samples.hpp"
 
 using namespace peristep::learning;
 
@@ -25,15 +26,6 @@ namespace {
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-
-struct Sample {
-  const char* name;
-  const char* set;
-  double deltaPerH;     // 0: the learned delta
-  bool edgesDriven;     // III: the vertical edges follow the frames
-  double s0Scale;       // s0 ~ 1/sqrt(delta), 003 Sec. 5.4
-  const char* paper;    // 003's displacement / damage errors
-};
 
 struct Outcome {
   PredictionError error;
@@ -123,24 +115,18 @@ void diagnose(const DamagedLpsOperator& op, const FractureFrames& data, const Pr
 
 // increments: the frames minus frame 0, i.e. frame 0 taken as the unstressed reference state (sample III
 // is pre-stretched by 10% in MD, a state 003's sample is not in and the learned linear model is not made for).
-Outcome predict(const CoarseDataSet& set, const Sample& smp, const KernelFit& fit, double delta0, double s0,
+Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const KernelFit& fit, double s0,
                 std::size_t substeps, double layer, bool increments, bool freeSurface, bool diagnostics = false) {
   const auto t0 = std::chrono::steady_clock::now();
   FractureFrames data = fractureFrames(set);
   if (increments)
     for (std::size_t f = data.u.size(); f-- > 0;)
       for (std::size_t k = 0; k < data.u[f].size(); ++k) data.u[f][k] -= data.u[0][k];
-  const double delta = smp.deltaPerH > 0 ? smp.deltaPerH * set.grid.hx : delta0;
-  const BernsteinKernel kernel{delta, fit.kernel.alpha, fit.kernel.D};  // K/m only: the scale does not matter
-  DamagedLpsOperator op(set.grid, makeLatticeStencil(set.grid.hx, set.grid.hy, delta), kernel, fit.lambda, fit.mu);
-  op.setFreeSurfaceTerms(freeSurface);
-  PredictionSetup s;
-  s.s0 = s0 * smp.s0Scale;
-  s.substeps = substeps;
-  // The slit just right of x1 = 0: on the fine grid a lattice column lies on x1 = 0.
-  s.initialStretch = op.slit(1e-6, -kHalfSide - 10, 1e-6, -25);
-  for (std::size_t p = 0; p < set.grid.size(); ++p)
-    s.prescribed.push_back(smp.edgesDriven && std::abs(set.grid.x(p)) > kHalfSide - layer * delta);
+  const PredictionCase pc =
+      predictionCase(set.grid, smp, {fit.kernel, fit.lambda, fit.mu}, s0, substeps, layer, freeSurface);
+  const DamagedLpsOperator& op = pc.op;
+  const PredictionSetup& s = pc.setup;
+  const double delta = smp.deltaPerH > 0 ? smp.deltaPerH * set.grid.hx : fit.kernel.delta;
   Outcome out;
   out.s0 = s.s0;
   out.points = set.grid.size();
@@ -195,11 +181,7 @@ int main(int argc, char** argv) {
                 "edge layers of III %.2f delta%s\n\n",
                 interval, substeps, interval / static_cast<double>(substeps), s0, layer,
                 increments ? "; displacements from frame 0 (--increments)" : "");
-    const Sample samples[] = {
-        {"III training, h = 5 A", "fracture_train", 0, true, 1.0, "27 / 9"},
-        {"IV test, h = 5 A", "fracture_test", 0, false, 1.0, "58 / 15"},
-        {"III training, h = 3.17 A", "fracture_train_fine", 4, true, std::sqrt(5.0 / 3.17), "19 / 30"},
-    };
+    const auto& samples = kMdFractureSamples;
     std::printf("u, phi err: sqrt(sum_f |pred - MD|^2 / sum_f |MD|^2), frames 1-40; mean: of the per-frame ratios; "
                 "u shift: u err without the mean of pred - MD per frame;\nphi 40: mean damage at frame 40, predicted / "
                 "MD; frame 1 [eV/A^4]: |mean L_KN[u]|, rms L_KN[u], rms rho u'' of the MD frames over the free "
@@ -224,8 +206,8 @@ int main(int argc, char** argv) {
       }
       std::fflush(stdout);
     };
-    for (const Sample& smp : samples)
-      row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, s0, substeps, layer, increments, !noFreeSurface,
+    for (const MdFractureSample& smp : samples)
+      row(smp.name, predict(file.sets.at(smp.set), smp, fit, s0, substeps, layer, increments, !noFreeSurface,
                   diagnostics),
           smp.paper);
     if (!scan.empty()) {
@@ -233,14 +215,14 @@ int main(int argc, char** argv) {
                   "displacement error compares across s0:\n");
       double best = NAN, bestError = INFINITY;
       for (const double s : scan) {
-        const Outcome o = predict(file.sets.at(samples[0].set), samples[0], fit, delta, s, substeps, layer, increments,
+        const Outcome o = predict(file.sets.at(samples[0].set), samples[0], fit, s, substeps, layer, increments,
                                   !noFreeSurface);
         row(samples[0].name, o, samples[0].paper);
         if (o.finite && o.error.displacement < bestError) best = s, bestError = o.error.displacement;
       }
       std::printf("\nwith the s0 of the smallest displacement error on III, %.4f:\n", best);
-      for (const Sample& smp : samples)
-        row(smp.name, predict(file.sets.at(smp.set), smp, fit, delta, best, substeps, layer, increments, !noFreeSurface),
+      for (const MdFractureSample& smp : samples)
+        row(smp.name, predict(file.sets.at(smp.set), smp, fit, best, substeps, layer, increments, !noFreeSurface),
             smp.paper);
     }
     std::printf("\ntotal %.1f s\n", seconds(t0));

@@ -80,9 +80,9 @@ inline void recordMessage(fmi3InstanceEnvironment environment, fmi3Status status
 // One co-simulation instance with its own log; freed on destruction.
 class Session {
  public:
-  explicit Session(bool loggingOn = true)
+  explicit Session(bool loggingOn = true, const char* resourcePath = PERISTEP_RESOURCES_PATH)
       : fmu(Fmu::get()),
-        instance(fmu.fmi3InstantiateCoSimulation("abi", PERISTEP_INSTANTIATION_TOKEN, nullptr, fmi3False, loggingOn,
+        instance(fmu.fmi3InstantiateCoSimulation("abi", PERISTEP_INSTANTIATION_TOKEN, resourcePath, fmi3False, loggingOn,
                                                  fmi3False, fmi3False, nullptr, 0, &log, recordMessage, nullptr)) {
     if (!instance) throw std::runtime_error("instantiation failed");
   }

@@ -130,6 +130,9 @@ const std::set<std::string> kDimensionless{
     "weibullShape",         // shape of a Weibull law
     "barStrain",            // a strain
     "cyclicExponent",       // n', the exponent of a power law
+    "learnedCriticalStretch",       // a stretch
+    "predictionErrorDisplacement",  // relative error
+    "predictionErrorDamage",        // relative error
 };
 
 class Checker {

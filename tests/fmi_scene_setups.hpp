@@ -5,8 +5,16 @@
 // 001's beam at h = 3.125 mm. internalTimeStep stays 0: the dynamic scenes take 001's steps. The 1D bar of
 // 002 (no image outputs: 2 x 2) with 16 bonds, pulled monotonically by loadFactor.
 #include <catch2/catch.hpp>
+#include <string>
 
 #include "fmi_abi_support.hpp"
+
+// A communication step that fits the scene: one MD frame interval for learnedFracture (it steps whole
+// frames), 2 us for the dynamic scenes (their descriptions start with "Dynamic"), 0.25 s for the others.
+inline double coarseStep(std::int64_t scene, const std::string& description) {
+  if (scene == PERISTEP_SCENE_LEARNED_FRACTURE) return 4.95e-14;
+  return description.rfind("Dynamic", 0) == 0 ? 2e-6 : 0.25;
+}
 
 inline void setUpCoarseScene(Session& s, std::int64_t scene) {
   const auto grid = [&](std::uint64_t nx, std::uint64_t ny, std::uint64_t modes) {
@@ -34,6 +42,7 @@ inline void setUpCoarseScene(Session& s, std::int64_t scene) {
       domain(0.1, 0.1, 0.25);
       REQUIRE(s.setFloat64(PERISTEP_VR_DELTA_OVER_H, {2.0}) == fmi3OK);
       return;
+    case PERISTEP_SCENE_LEARNED_FRACTURE: grid(20, 20, 1); return;  // sample III at h = 5 A
     case PERISTEP_SCENE_GAMUT_BAR:
       grid(2, 2, 1);
       REQUIRE(s.setUInt64(PERISTEP_VR_GAMUT_BONDS, 16) == fmi3OK);

@@ -45,7 +45,7 @@ std::map<std::string, std::string> unpack(const char* path) {
 
 }  // namespace
 
-TEST_CASE("PeriStep.fmu holds the model description, the binary and the documentation", "[fmu]") {
+TEST_CASE("PeriStep.fmu holds the model description, the binary, the documentation and the resources", "[fmu]") {
   const auto entries = unpack(PERISTEP_FMU_ARCHIVE);
   const std::string bundled = "binaries/x86_64-linux/lib", licenses = "documentation/licenses/";
   for (const auto& [name, content] : entries) {
@@ -53,7 +53,7 @@ TEST_CASE("PeriStep.fmu holds the model description, the binary and the document
       CHECK(content.substr(0, 4) == "\x7f" "ELF");
     } else if (!name.starts_with(licenses)) {
       CHECK((name == "modelDescription.xml" || name == "binaries/x86_64-linux/PeriStep.so" ||
-             name == "documentation/index.html"));
+             name == "documentation/index.html" || name == "resources/md_fracture_samples.bin"));
     }
   }
   REQUIRE(entries.count(licenses + "license.txt") == 1);
@@ -64,6 +64,9 @@ TEST_CASE("PeriStep.fmu holds the model description, the binary and the document
   CHECK(entries.at("binaries/x86_64-linux/PeriStep.so") == readFile(PERISTEP_SO_PATH));
   CHECK(entries.at("documentation/index.html") == readFile(PERISTEP_FMU_DOCUMENTATION));
   CHECK(entries.at("binaries/x86_64-linux/PeriStep.so").substr(0, 4) == "\x7f" "ELF");
+  // Scene learnedFracture's model and MD frames, as the build wrote them.
+  REQUIRE(entries.count("resources/md_fracture_samples.bin") == 1);
+  CHECK(entries.at("resources/md_fracture_samples.bin") == readFile(PERISTEP_RESOURCES_PATH "md_fracture_samples.bin"));
 }
 
 TEST_CASE("the FMU's documentation/index.html lists every variable of its model description", "[fmu]") {

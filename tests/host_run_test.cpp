@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "host_test_support.hpp"
 
@@ -133,4 +134,33 @@ TEST_CASE("peristep info: every variable with causality, type and unit", "[host]
   for (const char* line : {"poissonRatio", "structuralParameter", "calculatedParameter", "loadFactor", "errorL2",
                            "ux[ny][nx]", "xi[nModes]", "PeriStep.Scene", "smooth", "N/m"})
     CHECK_THAT(r.out, Contains(line));
+}
+
+// 003's prediction through the host: scenes/learned_fracture.toml runs sample III from the FMU's resources
+// (unpacked from PeriStep.fmu with the rest) and its CSV ends with the errors over frames 1-40 that
+// bench/learn_predict prints (361.7% / 135.9%, bench/README.md "Prediction").
+TEST_CASE("peristep run scenes/learned_fracture.toml: the learned model's errors against 40 MD frames",
+          "[host][run][learned]") {
+  TempDir dir;
+  const ProcessResult r = runProcess(
+      {PERISTEP_HOST_BINARY, "run", PERISTEP_SOURCE_DIR "/scenes/learned_fracture.toml", "--fmu", PERISTEP_FMU, "--out",
+       "lf.h5"},
+      dir.path());
+  INFO(r.err);
+  REQUIRE(r.exitCode == 0);
+  std::istringstream csv(readText(dir / "lf.csv"));
+  std::string header, line, last;
+  std::getline(csv, header);
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) last = line, ++rows;
+  CHECK(rows == 40);
+  const auto column = [&](const std::string& name) {
+    std::istringstream h(header), v(last);
+    for (std::string key, value; std::getline(h, key, ',') && std::getline(v, value, ',');)
+      if (key == name) return std::stod(value);
+    FAIL("no column " << name);
+    return 0.0;
+  };
+  CHECK(column("predictionErrorDisplacement") == Approx(3.617).epsilon(1e-3));
+  CHECK(column("predictionErrorDamage") == Approx(1.359).epsilon(1e-3));
 }

@@ -28,7 +28,7 @@ struct EnumerationValue {
   Kind kind;
 };
 
-inline constexpr std::array<EnumerationValue<SceneId>, 10> kSceneValues{{
+inline constexpr std::array<EnumerationValue<SceneId>, 11> kSceneValues{{
     {PERISTEP_SCENE_SMOOTH, SceneId::Smooth},
     {PERISTEP_SCENE_COMPOSITE, SceneId::Composite},
     {PERISTEP_SCENE_INTERFACE_CRACK, SceneId::InterfaceCrack},
@@ -39,10 +39,11 @@ inline constexpr std::array<EnumerationValue<SceneId>, 10> kSceneValues{{
     {PERISTEP_SCENE_KL_PLATE, SceneId::KlPlate},
     {PERISTEP_SCENE_SPECIMEN, SceneId::Specimen},
     {PERISTEP_SCENE_GAMUT_BAR, SceneId::GamutBar},
+    {PERISTEP_SCENE_LEARNED_FRACTURE, SceneId::LearnedFracture},
 }};
 
 // The scenes' names and descriptions: FMI's own (they give the DefaultExperiment and step sizes that fit).
-inline constexpr std::array<Option<SceneId>, 10> kSceneOptions{{
+inline constexpr std::array<Option<SceneId>, 11> kSceneOptions{{
     {SceneId::Smooth, "smooth",
      "Smooth manufactured solution, one random coordinate (Fan et al., Test 1); quasi-static: the "
      "DefaultExperiment fits"},
@@ -81,6 +82,19 @@ inline constexpr std::array<Option<SceneId>, 10> kSceneOptions{{
      "monotonic: every step moves the end stress to loadFactor * sigma_f; cyclic: every step of any size "
      "takes the next of the protocol's 53 force steps, and cyclicExponent, cyclicCoefficient hold n', K' "
      "after the 53rd; quasi-static, no image outputs"},
+    {SceneId::LearnedFracture, "learnedFracture",
+     "The LPS model learned from molecular dynamics of graphene (You et al., paper 003) predicting an MD "
+     "fracture sample (learnedSample) from its frame 0: the kernel and moduli fitted by learn_lps, s0 = "
+     "learnedCriticalStretch, edges or body force driven by the frames; needs the FMU's resources. nx, ny: the "
+     "sample's grid (20 x 20, or 31 x 31 for trainingFine); each communication step is a whole number of MD "
+     "frame intervals of 4.95e-14 s (8 explicit steps each, or internalTimeStep), up to frame 40 (stop time "
+     "1.98e-12 s); predictionErrorDisplacement and predictionErrorDamage compare with the frames so far"},
+}};
+
+inline constexpr std::array<EnumerationValue<LearnedSample>, 3> kLearnedSampleValues{{
+    {PERISTEP_LEARNED_TRAINING, LearnedSample::Training},
+    {PERISTEP_LEARNED_TEST, LearnedSample::Test},
+    {PERISTEP_LEARNED_TRAINING_FINE, LearnedSample::TrainingFine},
 }};
 
 inline constexpr std::array<EnumerationValue<SpecimenModel>, 2> kSpecimenModelValues{{

@@ -128,7 +128,7 @@ fmi3Instance fmi3InstantiateModelExchange(fmi3String, fmi3String, fmi3String, fm
 }
 
 fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
-                                         fmi3String /*resourcePath: PeriStep has no resources*/,
+                                         fmi3String resourcePath,
                                          fmi3Boolean /*visible: there is nothing to show*/, fmi3Boolean loggingOn,
                                          fmi3Boolean eventModeUsed, fmi3Boolean /*earlyReturnAllowed: never used*/,
                                          const fmi3ValueReference /*requiredIntermediateVariables*/[],
@@ -148,7 +148,8 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String ins
     if (eventModeUsed) return refuse("eventModeUsed = true, but PeriStep has no Event Mode (hasEventMode = false)");
     if (nRequiredIntermediateVariables > 0)
       return refuse("requiredIntermediateVariables: PeriStep offers no intermediate update");
-    auto* instance = new Instance(Logger(logMessage, instanceEnvironment, loggingOn));
+    // The resources hold the MD frames of scene learnedFracture; the other scenes need none.
+    auto* instance = new Instance(Logger(logMessage, instanceEnvironment, loggingOn), resourcePath ? resourcePath : "");
     instance->logger().event(std::string("instantiated ") + instanceName);
     return instance;
   } catch (...) {

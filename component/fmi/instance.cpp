@@ -46,7 +46,8 @@ bool sameTime(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.
 
 }  // namespace
 
-Instance::Instance(Logger logger) : logger_(std::move(logger)) {}
+Instance::Instance(Logger logger, std::string resourcePath)
+    : logger_(std::move(logger)), resourcePath_(std::move(resourcePath)) {}
 
 Instance::~Instance() = default;
 
@@ -142,6 +143,7 @@ SceneModel& Instance::model() {
 
 SceneParameters Instance::setUp(const ParameterValues& values) const {
   SceneParameters p = sceneParameters(values);
+  p.resourcePath = resourcePath_;
   // Always attached (the logger drops what is switched off): fmi3SetDebugLogging may come later.
   p.progress = [this](std::string_view phase, std::uint64_t done, std::uint64_t total) {
     logger_.progress(phase, done, total);

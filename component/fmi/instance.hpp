@@ -6,6 +6,7 @@
 // different threads.
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -20,7 +21,7 @@ namespace peristep::fmi {
 
 class Instance {
  public:
-  explicit Instance(Logger logger);
+  Instance(Logger logger, std::string resourcePath);
   ~Instance();
   Instance(const Instance&) = delete;
   Instance& operator=(const Instance&) = delete;
@@ -75,6 +76,7 @@ class Instance {
   std::size_t resolve(std::span<const fmi3ValueReference> vrs, bool forSet) const;
 
   Logger logger_;
+  std::string resourcePath_;  // fmi3InstantiateCoSimulation's, possibly empty
   State state_ = Instantiated;
   ParameterValues values_;
   std::unique_ptr<SceneModel> model_;

@@ -85,7 +85,7 @@ GamutBarSpec gamutBar(const ParameterValues& v) {
   return s;
 }
 
-const std::array<ComputedVariable, 36> kComputed{{
+const std::array<ComputedVariable, 38> kComputed{{
     {PERISTEP_VR_XI_DISTRIBUTION, Needs::Parameters, nullptr,
      [](P p, M, std::span<std::int32_t> out) {
        const SceneParameters s = sceneParameters(p);
@@ -134,6 +134,10 @@ const std::array<ComputedVariable, 36> kComputed{{
      [](P, M m, std::span<double> out) { out[0] = m->cyclicExponent(); }},
     {PERISTEP_VR_CYCLIC_COEFFICIENT, Needs::Solution,
      [](P, M m, std::span<double> out) { out[0] = m->cyclicCoefficient(); }},
+    {PERISTEP_VR_PREDICTION_ERROR_U, Needs::Solution,
+     [](P, M m, std::span<double> out) { out[0] = m->predictionErrorDisplacement(); }},
+    {PERISTEP_VR_PREDICTION_ERROR_DAMAGE, Needs::Solution,
+     [](P, M m, std::span<double> out) { out[0] = m->predictionErrorDamage(); }},
 }};
 
 }  // namespace
@@ -171,6 +175,10 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.criticalEnergyReleaseRate = v.scalar<double>(PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE);
   p.density = v.scalar<double>(PERISTEP_VR_DENSITY);
   if (p.scene == SceneId::Specimen) p.specimen = specimen(v);
+  if (p.scene == SceneId::LearnedFracture) {
+    p.learnedSample = kindOf(kLearnedSampleValues, v.scalar<std::int64_t>(PERISTEP_VR_LEARNED_SAMPLE), "learned sample");
+    p.learnedCriticalStretch = v.scalar<double>(PERISTEP_VR_LEARNED_CRITICAL_STRETCH);
+  }
   if (p.scene == SceneId::GamutBar) {
     p.gamutBar = gamutBar(v);
     p.gamutCyclic = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_PROTOCOL) == PERISTEP_GAMUT_CYCLIC;

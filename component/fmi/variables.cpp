@@ -531,6 +531,26 @@ std::vector<Variable> makeTable() {
        .description = "gamutBar scene, cyclic protocol: K' of the same fit once the protocol's last step is done; 0 "
                       "before that, in monotonic loading and in the other scenes",
        .unit = "Pa", .dependencies = onNoInput()},
+      {.name = "learnedSample", .vr = PERISTEP_VR_LEARNED_SAMPLE, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "learnedFracture scene: the MD fracture sample predicted", .declaredType = "PeriStep.LearnedSample",
+       .start = "1"},
+      {.name = "learnedCriticalStretch", .vr = PERISTEP_VR_LEARNED_CRITICAL_STRETCH, .type = T::Float64,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "learnedFracture scene: critical stretch s0 of the smooth bond states 003:(28) at h = 5 A "
+                      "(the fine sample takes s0 sqrt(5/3.17), 003 Sec. 5.4); 003's value 0.11",
+       .start = "0.11", .min = Bound{0, true}},
+      {.name = "predictionErrorDisplacement", .vr = PERISTEP_VR_PREDICTION_ERROR_U, .type = T::Float64,
+       .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
+       .description = "learnedFracture scene: sqrt(sum_f |u_pred - u_MD|^2 / sum_f |u_MD|^2) over the frames "
+                      "predicted so far and all points (003 Sec. 5.1); 0 before the first frame and in the other "
+                      "scenes",
+       .dependencies = onNoInput()},
+      {.name = "predictionErrorDamage", .vr = PERISTEP_VR_PREDICTION_ERROR_DAMAGE, .type = T::Float64,
+       .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
+       .description = "learnedFracture scene: the same for the damage 003:(46), the MD frames' own with the same "
+                      "s0 and slit; 0 before the first frame and in the other scenes",
+       .dependencies = onNoInput()},
   };
 }
 
@@ -575,6 +595,14 @@ const std::vector<EnumerationType>& enumerationTypes() {
         {"cyclic", PERISTEP_GAMUT_CYCLIC,
          "Fully reversed stress-controlled cycles at 6 amplitudes from sigma_y to sigma_f, 4 steps per half "
          "cycle (53 steps, the input unused); then n' and K'"}}},
+      {"PeriStep.LearnedSample",
+       "MD fracture samples of paper 003 Sec. 5 (scripts/md/generate.py)",
+       {{"training", PERISTEP_LEARNED_TRAINING,
+         "Sample III, h = 5 A (nx = ny = 20): pre-stretched sheet with a slit, vertical edges pulled; the edge "
+         "layers one horizon wide follow the frames"},
+        {"test", PERISTEP_LEARNED_TEST, "Sample IV, h = 5 A (nx = ny = 20): free edges, the body-force pulse"},
+        {"trainingFine", PERISTEP_LEARNED_TRAINING_FINE,
+         "Sample III on h = 3.17 A (nx = ny = 31), horizon 4 h, s0 scaled by sqrt(5/3.17)"}}},
       {"PeriStep.SpecimenModel", "Models of the specimen scene",
        enumerationItems(kSpecimenModelValues, kSpecimenModelOptions)},
       {"PeriStep.Grip",

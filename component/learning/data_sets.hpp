@@ -7,11 +7,10 @@
 #include "learning/coarse_data_file.hpp"
 #include "learning/fracture_residual.hpp"
 #include "learning/lps_residual.hpp"
+#include "learning/model_units.hpp"
 
 namespace peristep::learning {
 
-inline constexpr double kTPaPerEvA3 = 0.1602176634;  // 1 eV/A^3 = 160.2 GPa
-inline constexpr double kTimeUnit = 1.0180505e-14;    // sqrt(amu A^2 / eV) in s
 
 struct StaticData {
   PeriodicLattice lattice;

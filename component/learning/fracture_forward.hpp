@@ -5,7 +5,9 @@
 // step (003 Sec. 5.2 re-solves a step until no new bond breaks; with steps far below the frame interval the
 // states lag by one step only).
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "learning/damaged_lps_operator.hpp"
@@ -25,6 +27,28 @@ struct FractureRun {
   std::vector<std::vector<double>> u;           // at steps 0, every, 2 every, ...
   std::vector<std::vector<double>> maxStretch;  // largest bond stretches up to each recorded step
   bool finite = true;                           // false: the run blew up (unstable step), stopped there
+};
+
+// The run one step at a time (an FMU steps it frame by frame): at step n it holds u^n, u^(n-1) and the
+// largest stretches of steps 0..n. `op` and `drive` must outlive it.
+class FractureStepper {
+ public:
+  FractureStepper(const DamagedLpsOperator& op, const FractureDrive& drive, double s0, double dt);
+  // One step; false (and the state left as it was) when u^(n+1) is not finite: the step is unstable.
+  bool advance();
+  std::size_t step() const { return step_; }
+  const std::vector<double>& u() const { return u_; }
+  const std::vector<double>& maxStretch() const { return maxStretch_; }
+  // The state after set-up: step, u^n, u^(n-1), largest stretches.
+  std::vector<std::uint8_t> saveState() const;
+  void restoreState(std::span<const std::uint8_t> bytes);
+
+ private:
+  const DamagedLpsOperator& op_;
+  const FractureDrive& drive_;
+  double s0_, dt_;
+  std::size_t step_ = 0;
+  std::vector<double> prev_, u_, next_, b_, given_, maxStretch_;
 };
 
 // `steps` steps of size dt from (u0, u1); records every `every`-th step (step 0 included).

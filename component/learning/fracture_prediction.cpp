@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/byte_stream.hpp"
 #include "core/errors.hpp"
 
 namespace peristep::learning {
@@ -33,18 +34,57 @@ struct Sums {
 
 }  // namespace
 
-FractureRun predictFracture(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& s) {
+FractureDrive predictionDrive(const FractureFrames& data, const PredictionSetup& s) {
   require(s.lastFrame >= 1 && s.lastFrame < data.u.size() && s.substeps >= 1, "prediction: frames out of range");
-  const double dt = data.interval / static_cast<double>(s.substeps);
   FractureDrive d;
   d.rho = data.rho;
   d.prescribed = s.prescribed;
   d.initialStretch = s.initialStretch;
   d.u0 = data.u[0];
   interpolate(data.u, 1.0 / static_cast<double>(s.substeps), d.u1);  // u0 + dt (u^1 - u^0) / Delta t_frame
-  d.boundary = [&](double t, std::vector<double>& u) { interpolate(data.u, t / data.interval, u); };
-  d.body = [&](double t, std::vector<double>& b) { interpolate(data.b, t / data.interval, b); };
-  return runFracture(op, d, s.s0, dt, s.lastFrame * s.substeps, s.substeps);
+  d.boundary = [&data](double t, std::vector<double>& u) { interpolate(data.u, t / data.interval, u); };
+  d.body = [&data](double t, std::vector<double>& b) { interpolate(data.b, t / data.interval, b); };
+  return d;
+}
+
+FractureRun predictFracture(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& s) {
+  const FractureDrive d = predictionDrive(data, s);
+  return runFracture(op, d, s.s0, data.interval / static_cast<double>(s.substeps), s.lastFrame * s.substeps,
+                     s.substeps);
+}
+
+PredictionErrorSums::PredictionErrorSums(const DamagedLpsOperator& op, const PredictionSetup& s,
+                                         const std::vector<double>& frame0)
+    : op_(op), s0_(s.s0), dataStretch_(s.initialStretch) {
+  op.updateMaxStretch(frame0, dataStretch_);
+}
+
+void PredictionErrorSums::add(const std::vector<double>& u, const std::vector<double>& maxStretch,
+                              const std::vector<double>& frame) {
+  op_.updateMaxStretch(frame, dataStretch_);
+  Sums a{uErr_, uRef_}, b{phiErr_, phiRef_};
+  a.add(u, frame);
+  b.add(op_.damage(maxStretch, s0_), op_.damage(dataStretch_, s0_));
+  uErr_ = a.err, uRef_ = a.ref, phiErr_ = b.err, phiRef_ = b.ref;
+}
+
+double PredictionErrorSums::displacement() const { return uRef_ > 0 ? std::sqrt(uErr_ / uRef_) : 0.0; }
+double PredictionErrorSums::damage() const { return phiRef_ > 0 ? std::sqrt(phiErr_ / phiRef_) : 0.0; }
+
+std::vector<std::uint8_t> PredictionErrorSums::saveState() const {
+  ByteWriter w;
+  w.putArray(dataStretch_);
+  for (const double v : {uErr_, uRef_, phiErr_, phiRef_}) w.put(v);
+  return w.take();
+}
+
+void PredictionErrorSums::restoreState(std::span<const std::uint8_t> bytes) {
+  ByteReader r(bytes);
+  auto stretch = r.getArray<double>(dataStretch_.size());
+  const double e = r.get<double>(), f = r.get<double>(), g = r.get<double>(), h = r.get<double>();
+  r.expectEnd();
+  dataStretch_ = std::move(stretch);
+  uErr_ = e, uRef_ = f, phiErr_ = g, phiRef_ = h;
 }
 
 PredictionError predictionError(const DamagedLpsOperator& op, const FractureFrames& data, const FractureRun& run,

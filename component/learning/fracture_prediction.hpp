@@ -6,6 +6,8 @@
 // frames. The model's explicit stability limit is below the frame interval, so each interval is split
 // into `substeps` steps.
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "learning/fracture_forward.hpp"
@@ -21,6 +23,9 @@ struct PredictionSetup {
   std::size_t lastFrame = 40;          // predicts frames 0..lastFrame
 };
 
+// The drive of a prediction: u^0 = frame 0, u^1 from the frame velocity, BOmega_D and b from the frames;
+// it reads `data`, which must outlive it.
+FractureDrive predictionDrive(const FractureFrames& data, const PredictionSetup& setup);
 FractureRun predictFracture(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& setup);
 
 // Relative errors over frames 1..lastFrame at all points, 003 Sec. 5.1 ("averaged (in time) mean square
@@ -37,5 +42,24 @@ struct PredictionError {
 };
 PredictionError predictionError(const DamagedLpsOperator& op, const FractureFrames& data, const FractureRun& run,
                                 const PredictionSetup& setup);
+
+// The two errors above frame by frame (frames 1, 2, ... in order), as an FMU reports them while it steps:
+// after frame f they equal predictionError's over frames 1..f.
+class PredictionErrorSums {
+ public:
+  PredictionErrorSums(const DamagedLpsOperator& op, const PredictionSetup& setup, const std::vector<double>& frame0);
+  // The prediction at the next frame (its u and largest stretches) against that frame of the data.
+  void add(const std::vector<double>& u, const std::vector<double>& maxStretch, const std::vector<double>& frame);
+  double displacement() const;  // 0 before the first frame
+  double damage() const;
+  std::vector<std::uint8_t> saveState() const;
+  void restoreState(std::span<const std::uint8_t> bytes);
+
+ private:
+  const DamagedLpsOperator& op_;
+  double s0_;
+  std::vector<double> dataStretch_;  // largest stretches of the data's frames so far
+  double uErr_ = 0, uRef_ = 0, phiErr_ = 0, phiRef_ = 0;
+};
 
 }  // namespace peristep::learning

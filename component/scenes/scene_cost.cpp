@@ -122,6 +122,16 @@ Part gamutBar(const SceneParameters& p) {
   return m;
 }
 
+// 003's MD fracture samples (2.5 MB of frames, read once per process) and the learned operator's stencil on
+// at most 31 x 31 points: small and fixed.
+Part learnedFracture() {
+  Part m;
+  m.bytes = 4e6;
+  m.flops = 1e7;
+  m.what = "the MD frames of 003's fracture samples";
+  return m;
+}
+
 }  // namespace
 
 CostEstimate estimateSetUp(const SceneParameters& p) {
@@ -130,6 +140,8 @@ CostEstimate estimateSetUp(const SceneParameters& p) {
     parts.push_back(dynamicSetUp(p.grid));
   } else if (p.scene == SceneId::GamutBar) {
     parts.push_back(gamutBar(p));
+  } else if (p.scene == SceneId::LearnedFracture) {
+    parts.push_back(learnedFracture());
   } else {
     parts.push_back(lpsSetUp(p.grid));
     if (usesGlassCeramic(p))

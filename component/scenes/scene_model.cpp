@@ -38,7 +38,8 @@ std::size_t randomCoordinates(const SceneParameters& p) {
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches:
-    case SceneId::GamutBar: return 0;  // the bar's realization comes from seed
+    case SceneId::GamutBar:  // the bar's realization comes from seed
+    case SceneId::LearnedFracture: return 0;
   }
   return 0;
 }
@@ -63,12 +64,17 @@ double xiScale(SceneId scene, std::size_t) { return scene == SceneId::Smooth ? 0
 void validate(const SceneParameters& p) {
   require(p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack ||
               p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || p.scene == SceneId::Specimen ||
-              p.scene == SceneId::GamutBar || isDynamic(p),
+              p.scene == SceneId::GamutBar || p.scene == SceneId::LearnedFracture || isDynamic(p),
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p))
     validateDynamicScene(p);  // scenes 5-7: cell-centred lattices, h = Lx/nx, not Lx/(nx-1)
   else if (p.scene == SceneId::Specimen || p.scene == SceneId::GlassCeramic)
     validate(withPreset(p).specimen, p.grid);
+  else if (p.scene == SceneId::LearnedFracture)  // the sample's own grid (the runner checks nx, ny)
+    require(std::isfinite(p.learnedCriticalStretch) && p.learnedCriticalStretch > 0 &&
+                std::isfinite(p.internalTimeStep) && p.internalTimeStep >= 0,
+            "learnedCriticalStretch must be positive and internalTimeStep >= 0 (got " +
+                std::to_string(p.learnedCriticalStretch) + ", " + std::to_string(p.internalTimeStep) + ")");
   else if (p.scene != SceneId::GamutBar)  // the bar is not on the plate grid (GamutBar checks its spec)
     validate(p.grid);
   validateElastic(1.0, p.poissonRatio);
@@ -128,6 +134,7 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
     case SceneId::KlPlate: return makeKlPlateRunner(p);
     case SceneId::Specimen: return isDynamic(p) ? makeDynamicRunner(p) : makeSpecimenRunner(p);
     case SceneId::GamutBar: return makeGamutBarRunner(p);
+    case SceneId::LearnedFracture: return makeLearnedFractureRunner(p);
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
     case SceneId::BendingTwoNotches: return makeDynamicRunner(p);
@@ -211,6 +218,8 @@ double SceneModel::barStress() const { return impl_->runner->barStress(); }
 double SceneModel::barStrain() const { return impl_->runner->barStrain(); }
 double SceneModel::cyclicExponent() const { return impl_->runner->cyclicExponent(); }
 double SceneModel::cyclicCoefficient() const { return impl_->runner->cyclicCoefficient(); }
+double SceneModel::predictionErrorDisplacement() const { return impl_->runner->predictionErrorDisplacement(); }
+double SceneModel::predictionErrorDamage() const { return impl_->runner->predictionErrorDamage(); }
 
 std::vector<std::uint8_t> SceneModel::saveState() const {
   ByteWriter w;

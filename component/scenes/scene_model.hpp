@@ -30,7 +30,11 @@ enum class SceneId : std::int64_t {
   KlPlate = 8,         // plate whose Young's modulus is a Karhunen-Loeve random field (000 Sec. 2.2)
   Specimen = 9,        // the importer's plate: material maps, pre-cracks, grips (scenes/specimen.hpp)
   GamutBar = 10,       // 002: one realization of the 1D stochastic deformation-gamut bar (models/gamut_bar.hpp)
+  LearnedFracture = 11,  // 003: the learned LPS model predicting an MD fracture sample (learning/md_fracture_samples.hpp)
 };
+
+// The MD fracture samples of 003 Sec. 5 the learnedFracture scene predicts (learning::kMdFractureSamples).
+enum class LearnedSample : std::int32_t { Training = 0, Test = 1, TrainingFine = 2 };
 
 // Law of a standardized coordinate; Unused: the scene ignores that entry of xi.
 enum class XiDistribution : std::int32_t { Normal = 0, Uniform = 1, Unused = 2 };
@@ -76,6 +80,11 @@ struct SceneParameters {
   // protocol of scenes/gamut_loading.hpp, one force step per fmi3DoStep).
   GamutBarSpec gamutBar;
   bool gamutCyclic = false;
+  // LearnedFracture: the sample, s0 at h = 5 A (003: 0.11; the fine sample scales it), and where the FMU's
+  // resources are (the model and the frames; the FMI layer sets it from fmi3InstantiateCoSimulation).
+  LearnedSample learnedSample = LearnedSample::Training;
+  double learnedCriticalStretch = 0.11;
+  std::string resourcePath;
   WorkLimits limits;
   ProgressHook progress;            // optional: told how far long set-ups and steps have come
 };
@@ -173,6 +182,10 @@ class SceneModel {
   double barStrain() const;
   double cyclicExponent() const;
   double cyclicCoefficient() const;
+  // LearnedFracture (0 otherwise): the displacement and damage errors of 003 Sec. 5.1 against the MD frames,
+  // over the frames predicted so far (0 before the first).
+  double predictionErrorDisplacement() const;
+  double predictionErrorDamage() const;
 
   // Checkpoint of everything that changes after set-up (load, solution, bond state).
   std::vector<std::uint8_t> saveState() const;

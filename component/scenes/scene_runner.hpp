@@ -46,6 +46,9 @@ class Runner {
   virtual double barStrain() const { return 0.0; }
   virtual double cyclicExponent() const { return 0.0; }
   virtual double cyclicCoefficient() const { return 0.0; }
+  // The learned model's errors against the MD frames so far (LearnedFracture).
+  virtual double predictionErrorDisplacement() const { return 0.0; }
+  virtual double predictionErrorDamage() const { return 0.0; }
   virtual std::vector<std::uint8_t> saveState() const = 0;
   virtual void restoreState(std::span<const std::uint8_t> bytes) = 0;
 };
@@ -57,6 +60,7 @@ std::unique_ptr<Runner> makeKlPlateRunner(const SceneParameters& p);         // 
 std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (5-7), dynamic specimen
 std::unique_ptr<Runner> makeSpecimenRunner(const SceneParameters& p);        // quasi-static specimens (withPreset)
 std::unique_ptr<Runner> makeGamutBarRunner(const SceneParameters& p);        // 002's 1D bar
+std::unique_ptr<Runner> makeLearnedFractureRunner(const SceneParameters& p);  // 003's prediction
 // The dynamic scenes' own checks (cell-centred lattice, integrator options); throws InvalidInput.
 void validateDynamicScene(const SceneParameters& p);
 
