@@ -48,7 +48,8 @@ SpecimenSpec specimen(const ParameterValues& v) {
   s.density = copied(v.get<double>(PERISTEP_VR_MATERIAL_DENSITY));
   const auto x0 = v.get<double>(PERISTEP_VR_CRACK_X0), y0 = v.get<double>(PERISTEP_VR_CRACK_Y0);
   const auto x1 = v.get<double>(PERISTEP_VR_CRACK_X1), y1 = v.get<double>(PERISTEP_VR_CRACK_Y1);
-  for (std::size_t k = 0; k < x0.size(); ++k) s.cracks.push_back({x0[k], y0[k], x1[k], y1[k]});
+  for (std::size_t k = 0; k < x0.size(); ++k)  // a segment of length 0 is none
+    if (x0[k] != x1[k] || y0[k] != y1[k]) s.cracks.push_back({x0[k], y0[k], x1[k], y1[k]});
   s.material = kindOf(kMaterialFieldValues, v.scalar<std::int64_t>(PERISTEP_VR_MATERIAL_FIELD), "material field");
   s.model = kindOf(kSpecimenModelValues, v.scalar<std::int64_t>(PERISTEP_VR_SPECIMEN_MODEL), "specimen model");
   // Per side: the grip's enumeration, its displacement (x, y) and its velocity (x, y) at loadFactor 1.

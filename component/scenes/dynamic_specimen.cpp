@@ -20,8 +20,7 @@ DynamicScene makeDynamicSpecimen(const SceneParameters& p) {
   scene.ny = c.ny + 2 * c.layers;
   scene.x0 = c.x.front();
   scene.y0 = c.y.front();
-  for (const Segment& crack : s.cracks)
-    if (crack.x0 != crack.x1 || crack.y0 != crack.y1) scene.cracks.push_back(crack);
+  scene.cracks = s.cracks;
 
   const StateBasedInput in = dynamicMaterial(p);
   const double E0 = 3.0 * in.bulkModulus * (1.0 - 2.0 * in.poissonRatio);  // 001 Table 1's relation

@@ -37,8 +37,7 @@ FractureSpecimen buildFractureSpecimen(const SpecimenSpec& s, PointCloud cloud, 
     unit[2 * q + 1] = s.grips[k].uy;
   }
   BondState bonds = makeBondState(c, d.neighbours, mat.lambda, mat.mu, mat.fractureEnergy);
-  for (const Segment& crack : s.cracks)
-    if (crack.x0 != crack.x1 || crack.y0 != crack.y1) breakCrossing(bonds, c, d.neighbours, crack);
+  for (const Segment& crack : s.cracks) breakCrossing(bonds, c, d.neighbours, crack);
   b.E = m.E;
   b.disc = std::make_shared<const LpsDiscretization>(std::move(d));
   b.fracture = std::make_unique<QuasiStaticFracture>(b.disc, std::move(mat), std::move(bonds), std::move(unit), solver,

@@ -54,7 +54,7 @@ struct SpecimenSpec {
   // Per domain point, image order [ny][nx]. youngsModulus 0 marks Void: no material (a hole, a cut-out).
   std::vector<double> youngsModulus, poissonRatio, fractureEnergy;  // [Pa], -, [J/m^2]
   std::vector<double> density;  // [kg/m^3], read by the dynamic model
-  std::vector<Segment> cracks;  // pre-cracks: bonds crossing one are broken from the start
+  std::vector<Segment> cracks;  // pre-cracks (of positive length): bonds crossing one are broken from the start
   std::array<Grip, 4> grips{};  // by Side
   SpecimenMaterial material = SpecimenMaterial::Maps;
   SpecimenLoad load = SpecimenLoad::LoadFactor;
