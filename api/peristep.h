@@ -143,7 +143,14 @@ enum PeriStepValueReference {
   PERISTEP_VR_LEARNED_SAMPLE = 140,            /* Enumeration: enum PeriStepLearnedSample */
   PERISTEP_VR_LEARNED_CRITICAL_STRETCH = 141,  /* Float64: s0 at h = 5 A (003: 0.11) */
   PERISTEP_VR_PREDICTION_ERROR_U = 142,        /* Float64: displacement error against the MD frames so far */
-  PERISTEP_VR_PREDICTION_ERROR_DAMAGE = 143    /* Float64: damage error against the MD frames so far */
+  PERISTEP_VR_PREDICTION_ERROR_DAMAGE = 143,   /* Float64: damage error against the MD frames so far */
+
+  /* the specimen scene, quasi-static models: displacement gradient of every held collar at loadFactor 1 */
+  PERISTEP_VR_COLLAR_DUX_DX = 144, /* Float64 */
+  PERISTEP_VR_COLLAR_DUX_DY = 145, /* Float64 */
+  PERISTEP_VR_COLLAR_DUY_DX = 146, /* Float64 */
+  PERISTEP_VR_COLLAR_DUY_DY = 147, /* Float64 */
+  PERISTEP_VR_EXACT_SOLUTION = 148 /* Enumeration: enum PeriStepExactSolution (elastic model) */
 };
 
 /* Values of the enumeration PeriStep.Scene (variable "scene") */
@@ -193,10 +200,18 @@ enum PeriStepMaterialField {
   PERISTEP_MATERIAL_GLASS_CERAMIC = 3 /* the glass-ceramic of 000 Sec. 5 (seed or PCA field), as scene glassCeramic */
 };
 
+/* Values of the enumeration PeriStep.ExactSolution (variable "exactSolution", specimen scene) */
+enum PeriStepExactSolution {
+  PERISTEP_EXACT_NONE = 1,     /* the maps and grips */
+  PERISTEP_EXACT_SMOOTH = 2,   /* material, body force and collar data of 000 Test 1 */
+  PERISTEP_EXACT_COMPOSITE = 3 /* those of 000 Test 2 */
+};
+
 /* Values of the enumeration PeriStep.SpecimenModel (variable "specimenModel", specimen scene) */
 enum PeriStepSpecimenModel {
   PERISTEP_SPECIMEN_QUASI_STATIC = 1, /* LPS, brittle bonds, equilibrium at every load (Fan et al.) */
-  PERISTEP_SPECIMEN_DYNAMIC = 2       /* state-based model in time, grips at prescribed velocities (Jha-Lipton) */
+  PERISTEP_SPECIMEN_DYNAMIC = 2,      /* state-based model in time, grips at prescribed velocities (Jha-Lipton) */
+  PERISTEP_SPECIMEN_ELASTIC = 3       /* LPS without fracture: one factorization, one solve per step (Fan et al.) */
 };
 
 /* Values of the enumeration PeriStep.Grip (variables "gripLeft" ... "gripTop", specimen scene) */

@@ -2,6 +2,7 @@
 // (variable projection + Levenberg-Marquardt, 003 Algorithm 1 (iv)) for every (delta, P) of a grid, the pair
 // chosen by the validation residual; solvability (003:(37)) and the explicit stability limit of each kernel.
 //   learn_lps [--data data/learning/graphene_md.h5] [--deltas 10,15,20,25] [--orders 1,2,3,4] [--margin 1]
+//             [--increments]
 // then s0 by a 1-D minimization on frames 5-20 of the fracture training sample (003 Algorithm 1 (v)).
 #include <algorithm>
 #include <chrono>
@@ -38,12 +39,14 @@ int main(int argc, char** argv) {
   std::size_t firstFrame = 5, lastFrame = 20;
   double margin = 1.0;
   std::size_t scanStride = 8;
+  bool increments = false;
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--deltas", deltas, "horizons [A]")->delimiter(',');
   app.add_option("--orders", orders, "Bernstein orders P")->delimiter(',');
   app.add_option("--first-frame", firstFrame, "first frame of the s0 step (003: 5)");
   app.add_option("--last-frame", lastFrame, "last frame of the s0 step (003: 20)");
   app.add_option("--scan-stride", scanStride, "print every n-th point of the s0 scan");
+  app.add_flag("--increments", increments, "s0 step on u - u(frame 0): frame 0 as the unstressed reference state");
   app.add_option("--margin", margin, "residual points lie this many delta inside the sheet (003: 2)");
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
   try {
@@ -106,7 +109,10 @@ int main(int argc, char** argv) {
     // Step 2 (003 Algorithm 1 (v)): s0 from frames first..last of the fracture training sample.
     const auto t2 = std::chrono::steady_clock::now();
     const CoarseDataSet& frac = file.sets.at("fracture_train");
-    const FractureFrames frames = fractureFrames(frac);
+    FractureFrames frames = fractureFrames(frac);
+    if (increments)
+      for (std::size_t f = frames.u.size(); f-- > 0;)
+        for (std::size_t k = 0; k < frames.u[f].size(); ++k) frames.u[f][k] -= frames.u[0][k];
     const LatticeStencil fst = makeLatticeStencil(frac.grid.hx, frac.grid.hy, best.delta);
     const DamagedLpsOperator op(frac.grid, fst, f.kernel, f.lambda, f.mu);
     // The MD slit (x1 = 0, x2 from -50 to -25 A) is broken from the start.

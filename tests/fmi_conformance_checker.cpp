@@ -129,6 +129,7 @@ const std::set<std::string> kDimensionless{
     "scatterDenominator",   // 002:(26): divides a relative perturbation
     "weibullShape",         // shape of a Weibull law
     "barStrain",            // a strain
+    "collarDuxDx", "collarDuxDy", "collarDuyDx", "collarDuyDy",  // a displacement gradient (strain, rotation)
     "cyclicExponent",       // n', the exponent of a power law
     "learnedCriticalStretch",       // a stretch
     "predictionErrorDisplacement",  // relative error

@@ -45,11 +45,11 @@ inline constexpr std::array<EnumerationValue<SceneId>, 11> kSceneValues{{
 // The scenes' names and descriptions: FMI's own (they give the DefaultExperiment and step sizes that fit).
 inline constexpr std::array<Option<SceneId>, 11> kSceneOptions{{
     {SceneId::Smooth, "smooth",
-     "Smooth manufactured solution, one random coordinate (Fan et al., Test 1); quasi-static: the "
-     "DefaultExperiment fits"},
+     "Smooth manufactured solution, one random coordinate (Fan et al., Test 1): the specimen with specimenModel "
+     "elastic, every side held, exactSolution smooth; quasi-static: the DefaultExperiment fits"},
     {SceneId::Composite, "composite",
-     "Bimaterial composite, two random coordinates (Fan et al., Test 2); quasi-static: the "
-     "DefaultExperiment fits"},
+     "Bimaterial composite, two random coordinates (Fan et al., Test 2): the specimen with specimenModel "
+     "elastic, every side held, exactSolution composite; quasi-static: the DefaultExperiment fits"},
     {SceneId::InterfaceCrack, "interfaceCrack",
      "Crack on a bimaterial interface, two random coordinates (Fan et al., Test 3); quasi-static: the "
      "DefaultExperiment fits"},
@@ -68,14 +68,15 @@ inline constexpr std::array<Option<SceneId>, 11> kSceneOptions{{
      "Dynamic three-point bending of a beam with two pre-cracks (Jha-Lipton, Sec. 6.2); communication step "
      "1e-5 s, stop time 3.5e-4 s (about 2857 internal steps of 0.0035 us per step)"},
     {SceneId::KlPlate, "klPlate",
-     "Plate with a Karhunen-Loeve random Young's modulus (nModes coordinates), stretched by loadFactor; "
+     "Plate with a Karhunen-Loeve random Young's modulus (nModes coordinates), stretched by loadFactor: the "
+     "specimen with specimenModel elastic, materialField klField, E = 1, every side held, collarDuyDy = 0.01; "
      "quasi-static: the DefaultExperiment fits"},
     {SceneId::Specimen, "specimen",
      "The importer's specimen: plate Lx x Ly on the vertex grid, material maps materialYoungsModulus, "
      "materialPoissonRatio, materialFractureEnergy, pre-cracks crackX0..crackY1, grips gripLeft..gripTop "
      "moved by loadFactor; specimenModel quasiStatic: brittle fracture (000 Sec. 3.3), every step breaks "
-     "bonds until equilibrium at its load; dynamic: the state-based model of 001 over each communication "
-     "step, the held grips moving at loadFactor * (gripVx, gripVy)"},
+     "bonds until equilibrium at its load; elastic: the same without fracture; dynamic: the state-based model "
+     "of 001 over each communication step, the held grips moving at loadFactor * (gripVx, gripVy)"},
     {SceneId::GamutBar, "gamutBar",
      "1D stochastic deformation-gamut bar (Desai, paper 002 Sec. 4): realization seed of gamutBonds bonds, "
      "gamutMaterial, gamutGrid, scatter of 002:(26); fixed at x = 0, pulled at x = L. gamutProtocol "
@@ -97,9 +98,16 @@ inline constexpr std::array<EnumerationValue<LearnedSample>, 3> kLearnedSampleVa
     {PERISTEP_LEARNED_TRAINING_FINE, LearnedSample::TrainingFine},
 }};
 
-inline constexpr std::array<EnumerationValue<SpecimenModel>, 2> kSpecimenModelValues{{
+inline constexpr std::array<EnumerationValue<SpecimenModel>, 3> kSpecimenModelValues{{
     {PERISTEP_SPECIMEN_QUASI_STATIC, SpecimenModel::QuasiStatic},
     {PERISTEP_SPECIMEN_DYNAMIC, SpecimenModel::Dynamic},
+    {PERISTEP_SPECIMEN_ELASTIC, SpecimenModel::Elastic},
+}};
+
+inline constexpr std::array<EnumerationValue<ExactSolution>, 3> kExactSolutionValues{{
+    {PERISTEP_EXACT_NONE, ExactSolution::None},
+    {PERISTEP_EXACT_SMOOTH, ExactSolution::Smooth},
+    {PERISTEP_EXACT_COMPOSITE, ExactSolution::Composite},
 }};
 
 inline constexpr std::array<EnumerationValue<SpecimenMaterial>, 3> kMaterialFieldValues{{

@@ -52,6 +52,7 @@ SpecimenSpec specimen(const ParameterValues& v) {
     if (x0[k] != x1[k] || y0[k] != y1[k]) s.cracks.push_back({x0[k], y0[k], x1[k], y1[k]});
   s.material = kindOf(kMaterialFieldValues, v.scalar<std::int64_t>(PERISTEP_VR_MATERIAL_FIELD), "material field");
   s.model = kindOf(kSpecimenModelValues, v.scalar<std::int64_t>(PERISTEP_VR_SPECIMEN_MODEL), "specimen model");
+  s.exactSolution = kindOf(kExactSolutionValues, v.scalar<std::int64_t>(PERISTEP_VR_EXACT_SOLUTION), "exact solution");
   // Per side: the grip's enumeration, its displacement (x, y) and its velocity (x, y) at loadFactor 1.
   const fmi3ValueReference grips[4][5] = {
       {PERISTEP_VR_GRIP_LEFT, PERISTEP_VR_GRIP_LEFT_UX, PERISTEP_VR_GRIP_LEFT_UY, PERISTEP_VR_GRIP_LEFT_VX,
@@ -69,6 +70,8 @@ SpecimenSpec specimen(const ParameterValues& v) {
     s.grips[k] = {grip == PERISTEP_GRIP_HELD, v.scalar<double>(grips[k][1]), v.scalar<double>(grips[k][2]),
                   v.scalar<double>(grips[k][3]), v.scalar<double>(grips[k][4])};
   }
+  s.collarGradient = {v.scalar<double>(PERISTEP_VR_COLLAR_DUX_DX), v.scalar<double>(PERISTEP_VR_COLLAR_DUX_DY),
+                      v.scalar<double>(PERISTEP_VR_COLLAR_DUY_DX), v.scalar<double>(PERISTEP_VR_COLLAR_DUY_DY)};
   return s;
 }
 

@@ -319,6 +319,13 @@ std::vector<Variable> makeTable() {
                       "mean 1 drawn from xi (nModes coordinates) as in the KL plate, or the glass-ceramic of scene "
                       "glassCeramic",
        .declaredType = "PeriStep.MaterialField", .start = "1"},
+      {.name = "exactSolution", .vr = PERISTEP_VR_EXACT_SOLUTION, .type = T::Enumeration,
+       .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, elastic model with every side held: the material, body force and collar "
+                      "displacement (times loadFactor) of a manufactured solution of 000 Sec. 4 in place of the "
+                      "maps and grips, with errorL2 and the exact moments against it (scenes smooth and composite "
+                      "are these presets)",
+       .declaredType = "PeriStep.ExactSolution", .start = "1"},
       {.name = "materialPoissonRatio", .vr = PERISTEP_VR_MATERIAL_POISSON_RATIO, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: Poisson's ratio (plane strain) of each domain point, -1 < nu < 0.5",
@@ -455,6 +462,30 @@ std::vector<Variable> makeTable() {
        .description = "Specimen scene, dynamic model: y-velocity of the held top grip at loadFactor 1 (each "
                       "step moves it at loadFactor times this)",
        .unit = "m/s", .start = "0"},
+      {.name = "collarDuxDx", .vr = PERISTEP_VR_COLLAR_DUX_DX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, quasi-static models: du_x/dx of every held collar at loadFactor 1 (a collar "
+                      "point at (x, y) moves by loadFactor * (gripUx + collarDuxDx x + collarDuxDy y, gripUy + "
+                      "collarDuyDx x + collarDuyDy y))",
+       .start = "0"},
+      {.name = "collarDuxDy", .vr = PERISTEP_VR_COLLAR_DUX_DY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, quasi-static models: du_x/dy of every held collar at loadFactor 1 (a collar "
+                      "point at (x, y) moves by loadFactor * (gripUx + collarDuxDx x + collarDuxDy y, gripUy + "
+                      "collarDuyDx x + collarDuyDy y))",
+       .start = "0"},
+      {.name = "collarDuyDx", .vr = PERISTEP_VR_COLLAR_DUY_DX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, quasi-static models: du_y/dx of every held collar at loadFactor 1 (a collar "
+                      "point at (x, y) moves by loadFactor * (gripUx + collarDuxDx x + collarDuxDy y, gripUy + "
+                      "collarDuyDx x + collarDuyDy y))",
+       .start = "0"},
+      {.name = "collarDuyDy", .vr = PERISTEP_VR_COLLAR_DUY_DY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, quasi-static models: du_y/dy of every held collar at loadFactor 1 (a collar "
+                      "point at (x, y) moves by loadFactor * (gripUx + collarDuxDx x + collarDuxDy y, gripUy + "
+                      "collarDuyDx x + collarDuyDy y))",
+       .start = "0"},
 
       // The papers' material constants; a scene reads only its own.
       {.name = "glassYoungsModulus", .vr = PERISTEP_VR_GLASS_YOUNGS_MODULUS, .type = T::Float64,
@@ -603,6 +634,8 @@ const std::vector<EnumerationType>& enumerationTypes() {
         {"test", PERISTEP_LEARNED_TEST, "Sample IV, h = 5 A (nx = ny = 20): free edges, the body-force pulse"},
         {"trainingFine", PERISTEP_LEARNED_TRAINING_FINE,
          "Sample III on h = 3.17 A (nx = ny = 31), horizon 4 h, s0 scaled by sqrt(5/3.17)"}}},
+      {"PeriStep.ExactSolution", "Manufactured solutions a specimen can take",
+       enumerationItems(kExactSolutionValues, kExactSolutionOptions)},
       {"PeriStep.SpecimenModel", "Models of the specimen scene",
        enumerationItems(kSpecimenModelValues, kSpecimenModelOptions)},
       {"PeriStep.Grip",

@@ -15,22 +15,16 @@ using Field = std::function<Vec2(double x, double y)>;
 
 // The exact local solution at physical random coordinates xi.
 Field exactField(const SceneParameters& p, const std::vector<double>& xi) {
-  switch (p.scene) {
-    case SceneId::Smooth: {
-      auto s = std::make_shared<SmoothScene>(p.poissonRatio, xi[0]);
-      return [s](double x, double y) { return s->displacement(x, y); };
-    }
-    case SceneId::Composite: {
-      auto s = std::make_shared<CompositeScene>(p.poissonRatio, xi[0], xi[1], p.modulusContrast);
-      return [s](double x, double y) { return s->displacement(x, y); };
-    }
-    case SceneId::InterfaceCrack: {
-      auto f = std::make_shared<InterfaceCrackField>(2.0 + std::sin(xi[0]), 2.0 + std::sin(xi[1]), p.poissonRatio);
-      // Points on the crack line belong to the upper face, as in the scene (interface_crack.cpp).
-      return [f](double x, double y) { return f->displacement(x, std::abs(y) < 1e-12 ? +0.0 : y); };
-    }
-    default: return {};
+  if (exactSolution(p) != ExactSolution::None) {
+    std::shared_ptr<const ElasticScene> s = manufacturedScene(exactSolution(p), p.poissonRatio, xi, p.modulusContrast);
+    return [s](double x, double y) { return s->displacement(x, y); };
   }
+  if (p.scene == SceneId::InterfaceCrack) {
+    auto f = std::make_shared<InterfaceCrackField>(2.0 + std::sin(xi[0]), 2.0 + std::sin(xi[1]), p.poissonRatio);
+    // Points on the crack line belong to the upper face, as in the scene (interface_crack.cpp).
+    return [f](double x, double y) { return f->displacement(x, std::abs(y) < 1e-12 ? +0.0 : y); };
+  }
+  return {};
 }
 
 }  // namespace
@@ -50,7 +44,7 @@ std::optional<ExactMoments> exactMoments(const SceneParameters& p, const PointCl
     for (std::size_t a = 0; a < nodes.size(); ++a)
       for (std::size_t b = 0; b < r.nodes.size(); ++b) {
         n2.push_back(nodes[a]);
-        n2.back().push_back(xiScale(p.scene, k) * r.nodes[b]);
+        n2.back().push_back(xiScale(p, k) * r.nodes[b]);
         w2.push_back(weights[a] * r.weights[b]);
       }
     nodes = std::move(n2);

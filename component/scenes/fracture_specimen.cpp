@@ -7,9 +7,7 @@
 
 namespace peristep {
 
-FractureSpecimen buildFractureSpecimen(const SpecimenSpec& s, PointCloud cloud, const PointMaterial& m,
-                                       LinearSolverKind solver, FactorizationReuse reuse, FactorPrecision zonePrecision) {
-  FractureSpecimen b;
+std::shared_ptr<const LpsDiscretization> specimenDiscretization(PointCloud cloud) {
   LpsDiscretization d;
   d.cloud = std::move(cloud);
   const PointCloud& c = d.cloud;
@@ -21,26 +19,28 @@ FractureSpecimen buildFractureSpecimen(const SpecimenSpec& s, PointCloud cloud, 
   // then integrate over the part of the ball outside the material.
   d.weights = optimizationWeights(c, d.neighbours, std::vector<char>(c.size(), 1));
   d.weightSeconds = clock.lap();
+  return std::make_shared<const LpsDiscretization>(std::move(d));
+}
 
+FractureSpecimen buildFractureSpecimen(const SpecimenSpec& s, PointCloud cloud, const PointMaterial& m,
+                                       LinearSolverKind solver, FactorizationReuse reuse, FactorPrecision zonePrecision) {
+  FractureSpecimen b;
+  b.disc = specimenDiscretization(std::move(cloud));
+  const LpsDiscretization& d = *b.disc;
+  const PointCloud& c = d.cloud;
   FractureMaterial mat;
-  std::vector<double> unit(2 * c.size(), 0.0);
-  for (auto& collar : b.collars) collar.assign(c.size(), 0);
   for (std::size_t q = 0; q < c.size(); ++q) {
     const Lame l = planeStrain(m.E[q], m.nu[q]);
     mat.lambda.push_back(l.lambda);
     mat.mu.push_back(l.mu);
     mat.fractureEnergy.push_back(m.G[q]);
-    if (c.region[q] != Region::Dirichlet) continue;
-    const auto k = static_cast<std::size_t>(imageSource(c, q).side);
-    b.collars[k][q] = 1;
-    unit[2 * q] = s.grips[k].ux;
-    unit[2 * q + 1] = s.grips[k].uy;
   }
+  CollarMotion motion = collarMotion(s, c);
+  b.collars = std::move(motion.collars);
   BondState bonds = makeBondState(c, d.neighbours, mat.lambda, mat.mu, mat.fractureEnergy);
   for (const Segment& crack : s.cracks) breakCrossing(bonds, c, d.neighbours, crack);
   b.E = m.E;
-  b.disc = std::make_shared<const LpsDiscretization>(std::move(d));
-  b.fracture = std::make_unique<QuasiStaticFracture>(b.disc, std::move(mat), std::move(bonds), std::move(unit), solver,
+  b.fracture = std::make_unique<QuasiStaticFracture>(b.disc, std::move(mat), std::move(bonds), std::move(motion.unit), solver,
                                                      reuse, zonePrecision);
   return b;
 }

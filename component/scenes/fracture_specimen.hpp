@@ -25,6 +25,10 @@ struct FractureSpecimen {
   std::unique_ptr<QuasiStaticFracture> fracture;
 };
 
+// Neighbours, unknowns and quadrature weights of a specimen's cloud (weights on the full neighbourhood, Void
+// points included, for the broken-bond weights of 000:(3.18)).
+std::shared_ptr<const LpsDiscretization> specimenDiscretization(PointCloud cloud);
+
 // `cloud` is specimenCloud(s, grid). Builds neighbours, dofs and weights, the bonds of `material` with those
 // crossing a pre-crack broken, and the driver that moves each held collar by load * (ux, uy).
 FractureSpecimen buildFractureSpecimen(const SpecimenSpec& s, PointCloud cloud, const PointMaterial& material,

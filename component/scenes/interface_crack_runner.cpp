@@ -11,9 +11,9 @@ namespace {
 class InterfaceCrackRunner final : public Runner {
  public:
   explicit InterfaceCrackRunner(const SceneParameters& p)
-      : scene_(p.grid, p.poissonRatio, xiScale(p.scene, 0) * p.xi[0], xiScale(p.scene, 1) * p.xi[1], p.linearSolver),
-        E1_(2 + std::sin(xiScale(p.scene, 0) * p.xi[0])),
-        E2_(2 + std::sin(xiScale(p.scene, 1) * p.xi[1])) {}
+      : scene_(p.grid, p.poissonRatio, xiScale(p, 0) * p.xi[0], xiScale(p, 1) * p.xi[1], p.linearSolver),
+        E1_(2 + std::sin(xiScale(p, 0) * p.xi[0])),
+        E2_(2 + std::sin(xiScale(p, 1) * p.xi[1])) {}
   const PointCloud& cloud() const override { return scene_.solver().discretization().cloud; }
   void advance(const SceneInputs& in) override { scene_.solve(in.loadFactor); }
   std::vector<double> ux() const override { return onDomain(cloud(), scene_.solver().displacement(), 0); }

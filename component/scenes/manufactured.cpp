@@ -45,4 +45,10 @@ Vec2 CompositeScene::displacement(double x, double) const {
   return {3 * x / scale, -x / scale};
 }
 
+std::unique_ptr<ElasticScene> manufacturedScene(ExactSolution which, double nu, const std::vector<double>& xi,
+                                                double contrast) {
+  if (which == ExactSolution::Smooth) return std::make_unique<SmoothScene>(nu, xi.at(0));
+  return std::make_unique<CompositeScene>(nu, xi.at(0), xi.at(1), contrast);
+}
+
 }  // namespace peristep

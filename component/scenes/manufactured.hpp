@@ -1,8 +1,27 @@
 #pragma once
 // Scenes with an exact local solution: 000 Sec. 4.1 (Test 1) and 000 Sec. 4.2 (Test 2).
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "core/option_table.hpp"
 #include "scenes/elastic_scene.hpp"
 
 namespace peristep {
+
+// The manufactured solutions below as a specimen's material, body force and
+// collar data, with errorL2 against them: Tests 1 and 2 are presets of the elastic specimen with these.
+enum class ExactSolution { None, Smooth, Composite };
+
+inline constexpr std::array<Option<ExactSolution>, 3> kExactSolutionOptions{{
+    {ExactSolution::None, "none", "the maps, grips and no body force"},
+    {ExactSolution::Smooth, "smooth",
+     "000 Test 1: E = (2 + sin x sin y)(2 + sin 5 xi), u0 = (sin x sin y, -cos x cos y)/(2 + sin 5 xi), f = "
+     "-div sigma(u0); xi = 0.1 xi[0]"},
+    {ExactSolution::Composite, "composite",
+     "000 Test 2: E = S left of x = 0 and modulusContrast S right of it, S = 3 + sin xi[0] + sin xi[1], u0 = "
+     "(3x, -x)/E, no body force"},
+}};
 
 // Test 1: E = (2 + sin x sin y)(2 + sin 5 xi), u0 = (sin x sin y, -cos x cos y)/(2 + sin 5 xi),
 // f = -div sigma(u0) (the printed formula is +div sigma, see DESIGN 5.1); f does not depend on xi.
@@ -33,5 +52,10 @@ class CompositeScene final : public ElasticScene {
  private:
   double nu_, s_, contrast_;
 };
+
+// The scene of a manufactured solution (not None) at physical random coordinates xi (Smooth reads xi[0],
+// Composite xi[0] and xi[1]).
+std::unique_ptr<ElasticScene> manufacturedScene(ExactSolution which, double nu, const std::vector<double>& xi,
+                                                double contrast);
 
 }  // namespace peristep

@@ -9,16 +9,33 @@
 #include "scenes/exact_moments.hpp"
 #include "scenes/glass_ceramic.hpp"
 #include "scenes/glass_ceramic_material.hpp"
+#include "scenes/kl_plate.hpp"
 #include "scenes/scene_cost.hpp"
 #include "scenes/scene_runner.hpp"
 
 namespace peristep {
 
 SceneParameters withPreset(const SceneParameters& p) {
-  if (p.scene != SceneId::GlassCeramic) return p;
   SceneParameters q = p;
-  q.specimen = glassCeramicPreset(p.grid, GlassCeramicSpec{}.preCrackLength);
+  if (p.scene == SceneId::GlassCeramic) q.specimen = glassCeramicPreset(p.grid, GlassCeramicSpec{}.preCrackLength);
+  if (p.scene == SceneId::KlPlate) q.specimen = klPlatePreset(p.grid, p.poissonRatio);
+  if (p.scene == SceneId::Smooth || p.scene == SceneId::Composite) {
+    // Tests 1 and 2: the whole plate is the manufactured solution's (000 Sec. 4.1-4.2).
+    q.specimen = SpecimenSpec{};
+    q.specimen.model = SpecimenModel::Elastic;
+    for (Grip& grip : q.specimen.grips) grip.held = true;
+    q.specimen.exactSolution = p.scene == SceneId::Smooth ? ExactSolution::Smooth : ExactSolution::Composite;
+  }
   return q;
+}
+
+ExactSolution exactSolution(const SceneParameters& p) {
+  switch (p.scene) {
+    case SceneId::Smooth: return ExactSolution::Smooth;
+    case SceneId::Composite: return ExactSolution::Composite;
+    case SceneId::Specimen: return p.specimen.exactSolution;
+    default: return ExactSolution::None;
+  }
 }
 
 bool usesGlassCeramic(const SceneParameters& p) {
@@ -33,7 +50,8 @@ std::size_t randomCoordinates(const SceneParameters& p) {
     case SceneId::InterfaceCrack: return 2;
     case SceneId::KlPlate: return p.xi.size();
     case SceneId::GlassCeramic:
-    case SceneId::Specimen:  // the KL factor's coordinates, or the PCA field's (glass-ceramic material)
+    case SceneId::Specimen:  // an exact solution's, the KL factor's, or the PCA field's (glass-ceramic material)
+      if (exactSolution(p) != ExactSolution::None) return exactSolution(p) == ExactSolution::Smooth ? 1 : 2;
       return usesKlField(p) || (usesGlassCeramic(p) && p.pcaRealizations > 0) ? p.xi.size() : 0;
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
@@ -59,7 +77,7 @@ XiDistribution xiDistribution(const SceneParameters& p, std::size_t k) {
   return p.scene == SceneId::InterfaceCrack && k == 1 ? XiDistribution::Uniform : XiDistribution::Normal;
 }
 
-double xiScale(SceneId scene, std::size_t) { return scene == SceneId::Smooth ? 0.1 : 1.0; }
+double xiScale(const SceneParameters& p, std::size_t) { return exactSolution(p) == ExactSolution::Smooth ? 0.1 : 1.0; }
 
 void validate(const SceneParameters& p) {
   require(p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack ||
@@ -68,7 +86,8 @@ void validate(const SceneParameters& p) {
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p))
     validateDynamicScene(p);  // scenes 5-7: cell-centred lattices, h = Lx/nx, not Lx/(nx-1)
-  else if (p.scene == SceneId::Specimen || p.scene == SceneId::GlassCeramic)
+  else if (p.scene == SceneId::Specimen || p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate ||
+           p.scene == SceneId::Smooth || p.scene == SceneId::Composite)
     validate(withPreset(p).specimen, p.grid);
   else if (p.scene == SceneId::LearnedFracture)  // the sample's own grid (the runner checks nx, ny)
     require(std::isfinite(p.learnedCriticalStretch) && p.learnedCriticalStretch > 0 &&
@@ -127,12 +146,15 @@ namespace {
 
 std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
   switch (p.scene) {
-    case SceneId::Smooth:
-    case SceneId::Composite: return makeElasticRunner(p);
     case SceneId::InterfaceCrack: return makeInterfaceCrackRunner(p);
     case SceneId::GlassCeramic: return makeSpecimenRunner(withPreset(p));
-    case SceneId::KlPlate: return makeKlPlateRunner(p);
-    case SceneId::Specimen: return isDynamic(p) ? makeDynamicRunner(p) : makeSpecimenRunner(p);
+    case SceneId::Smooth:
+    case SceneId::Composite:
+    case SceneId::KlPlate: return makeElasticSpecimenRunner(withPreset(p));
+    case SceneId::Specimen:
+      return isDynamic(p)                                   ? makeDynamicRunner(p)
+             : p.specimen.model == SpecimenModel::Elastic ? makeElasticSpecimenRunner(p)
+                                                           : makeSpecimenRunner(p);
     case SceneId::GamutBar: return makeGamutBarRunner(p);
     case SceneId::LearnedFracture: return makeLearnedFractureRunner(p);
     case SceneId::PlexiglassCrack:
@@ -197,7 +219,7 @@ std::vector<double> SceneModel::exactMoment(int which) const {
 std::vector<double> SceneModel::xiScales() const {
   std::vector<double> s = impl_->runner->xiScales();
   if (s.empty())
-    for (std::size_t k = 0; k < impl_->parameters.xi.size(); ++k) s.push_back(xiScale(impl_->parameters.scene, k));
+    for (std::size_t k = 0; k < impl_->parameters.xi.size(); ++k) s.push_back(xiScale(impl_->parameters, k));
   return s;
 }
 

@@ -120,7 +120,9 @@ std::size_t randomCoordinates(const SceneParameters& p);
 XiDistribution xiDistribution(const SceneParameters& p, std::size_t k);
 // Physical coordinate over standardized one for the parametrized scenes (the PCA field's scales are
 // the square roots of its variances: SceneModel::xiScales).
-double xiScale(SceneId scene, std::size_t k);
+double xiScale(const SceneParameters& p, std::size_t k);
+// The manufactured solution of Tests 1 and 2 and of a specimen that takes one (None otherwise).
+ExactSolution exactSolution(const SceneParameters& p);
 
 // Throws InvalidInput naming the offending parameter; does no work (the limits are checked by
 // checkSetUpLimits in scenes/scene_cost.hpp).

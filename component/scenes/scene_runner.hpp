@@ -54,11 +54,10 @@ class Runner {
 };
 
 // `p` has been validated. Random coordinates enter in physical units (xiScale * xi).
-std::unique_ptr<Runner> makeElasticRunner(const SceneParameters& p);         // Tests 1 and 2
 std::unique_ptr<Runner> makeInterfaceCrackRunner(const SceneParameters& p);  // Test 3
-std::unique_ptr<Runner> makeKlPlateRunner(const SceneParameters& p);         // KL random modulus
 std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (5-7), dynamic specimen
 std::unique_ptr<Runner> makeSpecimenRunner(const SceneParameters& p);        // quasi-static specimens (withPreset)
+std::unique_ptr<Runner> makeElasticSpecimenRunner(const SceneParameters& p);  // elastic specimens (withPreset)
 std::unique_ptr<Runner> makeGamutBarRunner(const SceneParameters& p);        // 002's 1D bar
 std::unique_ptr<Runner> makeLearnedFractureRunner(const SceneParameters& p);  // 003's prediction
 // The dynamic scenes' own checks (cell-centred lattice, integrator options); throws InvalidInput.

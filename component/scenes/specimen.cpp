@@ -29,8 +29,8 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
   validate(g);
   const std::size_t n = g.nx * g.ny;
   const bool generated = s.material == SpecimenMaterial::GlassCeramic;
-  // A generated material needs no maps; maps that are given are checked all the same.
-  if (!generated || !s.youngsModulus.empty()) {
+  // A generated material or an exact solution needs no maps; maps that are given are checked all the same.
+  if (!(generated || s.exactSolution != ExactSolution::None) || !s.youngsModulus.empty()) {
     const auto length = [&](const std::vector<double>& map, const char* name) {
       require(map.size() == n, std::string(name) + " has " + std::to_string(map.size()) + " values for the " +
                                    std::to_string(g.ny) + " x " + std::to_string(g.nx) + " grid (ny x nx = " +
@@ -57,7 +57,11 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
     require(anyMaterial, "materialYoungsModulus is 0 (Void) everywhere: the specimen has no material");
   }
   require(!generated || s.model == SpecimenModel::QuasiStatic,
-          "materialField glassCeramic is for specimenModel quasiStatic (the dynamic model reads the maps)");
+          "materialField glassCeramic is for specimenModel quasiStatic (the other models read the maps)");
+  for (const double g : s.collarGradient) require(std::isfinite(g), "the collar gradient must be finite");
+  require(s.model != SpecimenModel::Dynamic || s.collarGradient == std::array<double, 4>{},
+          "the collar gradient (collarDuxDx ... collarDuyDy) moves the quasi-static models' grips; the dynamic "
+          "model's grips move at gripVx, gripVy: set it to 0");
   require(g.delta() < std::min(g.Lx, g.Ly),
           "the horizon deltaOverH * h = " + text(g.delta()) + " m is not smaller than the plate (Lx = " + text(g.Lx) +
               " m, Ly = " + text(g.Ly) + " m): use a smaller deltaOverH or a finer grid");
@@ -87,6 +91,12 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
             name + " holds a side along which materialYoungsModulus is 0 (Void): it would hold nothing");
   }
   require(anyHeld, "every grip is free: hold at least one side, or the specimen floats");
+  if (s.exactSolution != ExactSolution::None) {
+    const bool allHeld = std::all_of(s.grips.begin(), s.grips.end(), [](const Grip& g) { return g.held; });
+    require(s.model == SpecimenModel::Elastic && allHeld && s.cracks.empty() && s.material == SpecimenMaterial::Maps,
+            "an exactSolution is the material, body force and collar data of the whole plate: it needs specimenModel "
+            "elastic, every side held, no pre-crack and materialField map");
+  }
 }
 
 ImageSource imageSource(const PointCloud& c, std::size_t p) {
@@ -113,6 +123,37 @@ PointCloud specimenCloud(const SpecimenSpec& s, const GridSpec& g) {
   }
   c.domain = std::move(domain);
   return c;
+}
+
+PointCloud imageCloud(const PointCloud& cloud) {
+  PointCloud out = cloud;
+  out.domain.clear();
+  for (std::size_t q = 0; q < out.size(); ++q)
+    if (out.image[q] >= 0) out.domain.push_back(q);
+  return out;
+}
+
+std::vector<double> onImage(const PointCloud& image, const std::vector<double>& field, std::size_t stride,
+                            std::size_t offset) {
+  std::vector<double> v;
+  v.reserve(image.domain.size());
+  for (std::size_t q : image.domain) v.push_back(image.isVoid(q) ? 0.0 : field[stride * q + offset]);
+  return v;
+}
+
+CollarMotion collarMotion(const SpecimenSpec& s, const PointCloud& c) {
+  CollarMotion m;
+  for (auto& collar : m.collars) collar.assign(c.size(), 0);
+  m.unit.assign(2 * c.size(), 0.0);
+  const auto& G = s.collarGradient;
+  for (std::size_t q = 0; q < c.size(); ++q) {
+    if (c.region[q] != Region::Dirichlet) continue;
+    const auto k = static_cast<std::size_t>(imageSource(c, q).side);
+    m.collars[k][q] = 1;
+    m.unit[2 * q] = s.grips[k].ux + G[0] * c.x[q] + G[1] * c.y[q];
+    m.unit[2 * q + 1] = s.grips[k].uy + G[2] * c.x[q] + G[3] * c.y[q];
+  }
+  return m;
 }
 
 }  // namespace peristep

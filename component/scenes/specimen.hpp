@@ -4,19 +4,21 @@
 // broken quasi-statically by the LPS fracture driver (000 Sec. 3.3) or dynamically by the state-based
 // model of 001 with its time integrator.
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "core/option_table.hpp"
 #include "geometry/point_cloud.hpp"
 #include "geometry/segments.hpp"
+#include "scenes/manufactured.hpp"
 
 namespace peristep {
 
-enum class SpecimenModel { QuasiStatic, Dynamic };
+enum class SpecimenModel { QuasiStatic, Dynamic, Elastic };
 
 // Every model of the specimen, its name and description (the FMI enumeration PeriStep.SpecimenModel).
-inline constexpr std::array<Option<SpecimenModel>, 2> kSpecimenModelOptions{{
+inline constexpr std::array<Option<SpecimenModel>, 3> kSpecimenModelOptions{{
     {SpecimenModel::QuasiStatic, "quasiStatic",
      "LPS with brittle bonds (000 Sec. 3.3): every step moves the held grips by loadFactor * (gripUx, gripUy) "
      "and breaks bonds until equilibrium at that load"},
@@ -25,6 +27,10 @@ inline constexpr std::array<Option<SpecimenModel>, 2> kSpecimenModelOptions{{
      "timeIntegrator: the held grips move at loadFactor * (gripVx, gripVy); materialYoungsModulus marks Void "
      "and scales the stiffness point by point (and with it the bonds' fracture energy), materialDensity gives "
      "the mass"},
+    {SpecimenModel::Elastic, "elastic",
+     "LPS without fracture (000 Sec. 3.1): one factorization, every step one solve with the held grips at "
+     "loadFactor times their displacement; Void and pre-cracks shape the plate, nothing breaks "
+     "(materialFractureEnergy is not read)"},
 }};
 
 enum class Side { Left = 0, Right = 1, Bottom = 2, Top = 3 };
@@ -41,8 +47,9 @@ enum class SpecimenMaterial { Maps, KlField, GlassCeramic };
 // glassCeramic scene's U_D; its grips' displacements are then per metre of U_D).
 enum class SpecimenLoad { LoadFactor, LoadDisplacement };
 
-// A held side's collar moves rigidly: by load * (ux, uy) in the quasi-static model, at the velocity
-// load * (vx, vy) in the dynamic one. A free side has no collar (traction-free).
+// A held side's collar moves rigidly: by load * (ux, uy) in the quasi-static models (plus the specimen's
+// collar gradient), at the velocity load * (vx, vy) in the dynamic one. A free side has no collar
+// (traction-free).
 struct Grip {
   bool held = false;
   double ux = 0, uy = 0;  // [m] at load 1
@@ -56,8 +63,14 @@ struct SpecimenSpec {
   std::vector<double> density;  // [kg/m^3], read by the dynamic model
   std::vector<Segment> cracks;  // pre-cracks (of positive length): bonds crossing one are broken from the start
   std::array<Grip, 4> grips{};  // by Side
+  // Quasi-static models: every held collar point (x, y) also moves by load * G (x, y), G = {du_x/dx,
+  // du_x/dy, du_y/dx, du_y/dy}: a homogeneous strain or rotation imposed on the whole boundary.
+  std::array<double, 4> collarGradient{};
   SpecimenMaterial material = SpecimenMaterial::Maps;
   SpecimenLoad load = SpecimenLoad::LoadFactor;
+  // Elastic model, every side held: the material, body force and collar displacement (times the load) of a
+  // manufactured solution instead of the maps and grips.
+  ExactSolution exactSolution = ExactSolution::None;
 };
 
 // Whether the map marks point `image` as Void (a glass-ceramic specimen may come without maps).
@@ -68,7 +81,9 @@ inline bool isVoidInMap(const SpecimenSpec& s, std::size_t image) {
 // Throws InvalidInput naming the first inconsistency: a map of the wrong length (a glass-ceramic specimen
 // may have none), a negative or non-finite modulus, a fracture energy or density <= 0, nu outside (-1, 0.5),
 // a segment whose end leaves the plate or whose start lies beyond the collar, a held grip along a side where
-// the map is Void, a horizon larger than the plate, no held grip, a generated material with the dynamic model.
+// the map is Void, a horizon larger than the plate, no held grip, a generated material with a model other
+// than quasiStatic, a non-finite collar gradient or one given to the dynamic model, an exact solution on
+// another model than elastic or with a free side, pre-cracks or a generated material.
 void validate(const SpecimenSpec& s, const GridSpec& grid);
 
 // Where a point of the specimen's cloud (collar included) takes its material from: the nearest image
@@ -84,5 +99,20 @@ ImageSource imageSource(const PointCloud& cloud, std::size_t p);
 // the points beside a free side or beside Void, and the map's Void points, are Void. The domain lists the
 // material points in image order.
 PointCloud specimenCloud(const SpecimenSpec& s, const GridSpec& grid);
+
+// The cloud a specimen's outputs are written on: `cloud` with every image point, material or Void, as its
+// domain (image order); and a per-point field (`stride` values per point, component `offset`) on its
+// domain, 0 on Void.
+PointCloud imageCloud(const PointCloud& cloud);
+std::vector<double> onImage(const PointCloud& image, const std::vector<double>& field, std::size_t stride,
+                            std::size_t offset);
+
+// Where the held collars are and how they move at load 1: per side, 1 on that grip's collar points; per
+// point, (u_x, u_y) = grip displacement + collar gradient times (x, y) on the collars, 0 elsewhere.
+struct CollarMotion {
+  std::array<std::vector<std::uint8_t>, 4> collars;
+  std::vector<double> unit;
+};
+CollarMotion collarMotion(const SpecimenSpec& s, const PointCloud& cloud);
 
 }  // namespace peristep

@@ -7,31 +7,11 @@
 #include "scenes/crack_toughness.hpp"
 #include "scenes/fracture_specimen.hpp"
 #include "scenes/glass_ceramic_material.hpp"
-#include "scenes/kl_material.hpp"
+#include "scenes/map_material.hpp"
 #include "scenes/scene_runner.hpp"
 
 namespace peristep {
 namespace {
-
-// The maps' material at each point's nearest image point (collar included), E times the KL factor with
-// a random field; E = 0 on Void.
-PointMaterial mapMaterial(const PointCloud& c, const SceneParameters& p, double& retainedVariance) {
-  const SpecimenSpec& s = p.specimen;
-  std::vector<double> factor(c.size(), 1.0);
-  if (s.material == SpecimenMaterial::KlField) {
-    const std::shared_ptr<const KlField> field = sharedKlField(c, p);
-    factor = klMaterial(*field, 1.0, p);
-    retainedVariance = field->retainedVarianceFraction();
-  }
-  PointMaterial m;
-  for (std::size_t q = 0; q < c.size(); ++q) {
-    const std::size_t image = imageSource(c, q).image;
-    m.E.push_back(c.isVoid(q) ? 0.0 : s.youngsModulus[image] * factor[q]);
-    m.nu.push_back(s.poissonRatio[image]);
-    m.G.push_back(s.fractureEnergy[image]);
-  }
-  return m;
-}
 
 class SpecimenRunner final : public Runner {
  public:
@@ -60,10 +40,7 @@ class SpecimenRunner final : public Runner {
         hook("brokenBonds", r.newlyBroken, 0);
       });
     // The outputs cover every image point: the material ones are the cloud's domain, Void ones read 0.
-    output_ = b_.disc->cloud;
-    output_.domain.clear();
-    for (std::size_t q = 0; q < output_.size(); ++q)
-      if (output_.image[q] >= 0) output_.domain.push_back(q);
+    output_ = imageCloud(b_.disc->cloud);
   }
   const PointCloud& cloud() const override { return output_; }
   void advance(const SceneInputs& in) override {
@@ -110,10 +87,7 @@ class SpecimenRunner final : public Runner {
 
  private:
   std::vector<double> onImage(const std::vector<double>& field, std::size_t stride, std::size_t offset) const {
-    std::vector<double> v;
-    v.reserve(output_.domain.size());
-    for (std::size_t q : output_.domain) v.push_back(output_.isVoid(q) ? 0.0 : field[stride * q + offset]);
-    return v;
+    return peristep::onImage(output_, field, stride, offset);
   }
 
   SpecimenLoad load_;

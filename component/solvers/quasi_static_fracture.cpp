@@ -7,6 +7,7 @@
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
 #include "core/timer.hpp"
+#include "models/collar_force.hpp"
 #include "models/lps_material.hpp"
 #include "solvers/gmres.hpp"
 
@@ -345,27 +346,7 @@ LoadStepReport QuasiStaticFracture::advance(double load) {
 }
 
 std::array<double, 2> QuasiStaticFracture::collarForce(const std::vector<std::uint8_t>& collar) const {
-  const PointCloud& c = disc_->cloud;
-  const Neighbours& nb = disc_->neighbours;
-  const DofMap& d = disc_->dofs;
-  const auto theta = [&](std::size_t p) { return d.theta[p] >= 0 ? x_[static_cast<std::size_t>(d.theta[p])] : 0.0; };
-  std::array<double, 2> F{0, 0};
-  for (std::size_t p : c.domain)
-    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
-      const std::uint32_t q = nb.index[k];
-      if (!collar[q] || !bonds_.intact[k]) continue;
-      // Force of bond p-q on p: the negated summand of 000:(3.19).
-      const double z[2] = {c.x[q] - c.x[p], c.y[q] - c.y[p]};
-      const double r2 = z[0] * z[0] + z[1] * z[1];
-      const double Kw = 3.0 / (M_PI * std::pow(c.delta, 3) * std::sqrt(r2)) * disc_->weights[k];
-      const double lam = harmonicMean(material_.lambda[p], material_.lambda[q]);
-      const double m = harmonicMean(material_.mu[p], material_.mu[q]);
-      const double du[2] = {u_[2 * q] - u_[2 * p], u_[2 * q + 1] - u_[2 * p + 1]};
-      const double zdu = z[0] * du[0] + z[1] * du[1];
-      for (int a = 0; a < 2; ++a)
-        F[static_cast<std::size_t>(a)] += c.h * c.h * Kw * ((lam - m) * z[a] * (theta(p) + theta(q)) + 8.0 * m * z[a] * zdu / r2);
-    }
-  return F;
+  return peristep::collarForce(*disc_, material_.lambda, material_.mu, u_, x_, collar, &bonds_.intact);
 }
 
 std::vector<std::uint8_t> QuasiStaticFracture::saveState() const {

@@ -1,5 +1,7 @@
 #pragma once
 // Quasi-static heterogeneous LPS without fracture: assemble once, factorize once, solve per load.
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,11 +16,22 @@ struct StaticTimes {
   double assembly = 0, factorization = 0, solve = 0;
 };
 
+// A material given point by point, and the collar's displacement at load 1 ((u_x, u_y) of every point, read
+// on the collar); intact: the bonds of a cloud with Void points or pre-cracks, empty when all are intact.
+struct StaticLoading {
+  std::vector<double> lambda, mu, unitCollar;
+  std::vector<std::uint8_t> intact;
+};
+
 class StaticLps {
  public:
   // Evaluates the material on every point (rejecting E <= 0 with the offending location), assembles
   // the (u, theta) system and factorizes it.
   StaticLps(std::shared_ptr<const LpsDiscretization> disc, const ElasticScene& scene,
+            LinearSolverKind solver = LinearSolverKind::Umfpack);
+  // The same without body force, for a material and collar data given as arrays (no exact solution:
+  // errorL2 is not available).
+  StaticLps(std::shared_ptr<const LpsDiscretization> disc, StaticLoading loading,
             LinearSolverKind solver = LinearSolverKind::Umfpack);
 
   // Displacement for body force and collar data scaled by loadFactor (the problem is linear).
@@ -34,16 +47,23 @@ class StaticLps {
   // scaled by the load factor s: of the last solve, or of a given field.
   double errorL2() const { return errorL2At(ux_, uy_, load_); }
   double errorL2At(const std::vector<double>& ux, const std::vector<double>& uy, double loadFactor) const;
+  // (u_x, u_y) of every point at the last solve: the solution, load times the collar data on the collar.
+  std::vector<double> displacement() const;
+  // Force of the marked collar points on the domain at the last solve [N/m] (models/collar_force.hpp).
+  std::array<double, 2> collarForce(const std::vector<std::uint8_t>& collar) const;
 
  private:
+  void setUp(LinearSolverKind solver);
+
   std::shared_ptr<const LpsDiscretization> disc_;
-  const ElasticScene& scene_;
+  const ElasticScene* scene_ = nullptr;
+  StaticLoading loading_;
   LpsSystem system_;
   std::vector<double> rhs0_;  // f - B g for loadFactor = 1
   std::unique_ptr<LinearSolver> solver_;
   StaticTimes times_;
   double load_ = 0;
-  std::vector<double> ux_, uy_;
+  std::vector<double> x_, ux_, uy_;
 };
 
 }  // namespace peristep
