@@ -202,9 +202,10 @@ enum PeriStepMaterialField {
 
 /* Values of the enumeration PeriStep.ExactSolution (variable "exactSolution", specimen scene) */
 enum PeriStepExactSolution {
-  PERISTEP_EXACT_NONE = 1,     /* the maps and grips */
-  PERISTEP_EXACT_SMOOTH = 2,   /* material, body force and collar data of 000 Test 1 */
-  PERISTEP_EXACT_COMPOSITE = 3 /* those of 000 Test 2 */
+  PERISTEP_EXACT_NONE = 1,           /* the maps and grips */
+  PERISTEP_EXACT_SMOOTH = 2,         /* material, body force and collar data of 000 Test 1 */
+  PERISTEP_EXACT_COMPOSITE = 3,      /* those of 000 Test 2 */
+  PERISTEP_EXACT_INTERFACE_CRACK = 4 /* those of 000 Test 3 (give its crack as a pre-crack) */
 };
 
 /* Values of the enumeration PeriStep.SpecimenModel (variable "specimenModel", specimen scene) */

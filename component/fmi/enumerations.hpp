@@ -51,8 +51,9 @@ inline constexpr std::array<Option<SceneId>, 11> kSceneOptions{{
      "Bimaterial composite, two random coordinates (Fan et al., Test 2): the specimen with specimenModel "
      "elastic, every side held, exactSolution composite; quasi-static: the DefaultExperiment fits"},
     {SceneId::InterfaceCrack, "interfaceCrack",
-     "Crack on a bimaterial interface, two random coordinates (Fan et al., Test 3); quasi-static: the "
-     "DefaultExperiment fits"},
+     "Crack on a bimaterial interface, two random coordinates (Fan et al., Test 3): the specimen with "
+     "specimenModel elastic, every side held, exactSolution interfaceCrack and the crack from 2 delta beyond the "
+     "left edge to the origin; quasi-static: the DefaultExperiment fits"},
     {SceneId::GlassCeramic, "glassCeramic",
      "Pre-cracked glass-ceramic plate opened by loadDisplacement; microstructure from seed or its PCA field "
      "(Fan et al., Sec. 5); a preset of the specimen scene (materialField glassCeramic, grips bottom and top, "
@@ -104,10 +105,11 @@ inline constexpr std::array<EnumerationValue<SpecimenModel>, 3> kSpecimenModelVa
     {PERISTEP_SPECIMEN_ELASTIC, SpecimenModel::Elastic},
 }};
 
-inline constexpr std::array<EnumerationValue<ExactSolution>, 3> kExactSolutionValues{{
+inline constexpr std::array<EnumerationValue<ExactSolution>, 4> kExactSolutionValues{{
     {PERISTEP_EXACT_NONE, ExactSolution::None},
     {PERISTEP_EXACT_SMOOTH, ExactSolution::Smooth},
     {PERISTEP_EXACT_COMPOSITE, ExactSolution::Composite},
+    {PERISTEP_EXACT_INTERFACE_CRACK, ExactSolution::InterfaceCrack},
 }};
 
 inline constexpr std::array<EnumerationValue<SpecimenMaterial>, 3> kMaterialFieldValues{{

@@ -323,8 +323,8 @@ std::vector<Variable> makeTable() {
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene, elastic model with every side held: the material, body force and collar "
                       "displacement (times loadFactor) of a manufactured solution of 000 Sec. 4 in place of the "
-                      "maps and grips, with errorL2 and the exact moments against it (scenes smooth and composite "
-                      "are these presets)",
+                      "maps and grips, with errorL2 and the exact moments against it (scenes smooth, composite "
+                      "and interfaceCrack are these presets)",
        .declaredType = "PeriStep.ExactSolution", .start = "1"},
       {.name = "materialPoissonRatio", .vr = PERISTEP_VR_MATERIAL_POISSON_RATIO, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,

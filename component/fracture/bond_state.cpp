@@ -117,7 +117,15 @@ std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, c
   return fresh;
 }
 
-std::vector<double> damageField(const BondState& s, const PointCloud& c, const Neighbours& nb) {
+std::vector<std::uint8_t> intactBonds(const PointCloud& c, const Neighbours& nb, const std::vector<Segment>& cracks) {
+  // The geometry of a bond state alone: its critical stretches are not read.
+  const std::vector<double> unit(c.size(), 1.0);
+  BondState s = makeBondState(c, nb, unit, unit, unit);
+  for (const Segment& crack : cracks) breakCrossing(s, c, nb, crack);
+  return std::move(s.intact);
+}
+
+std::vector<double> damageField(const std::vector<std::uint8_t>& intact, const PointCloud& c, const Neighbours& nb) {
   std::vector<double> phi(c.domain.size(), 0.0);
   for (std::size_t i = 0; i < c.domain.size(); ++i) {
     const std::size_t p = c.domain[i];
@@ -125,18 +133,18 @@ std::vector<double> damageField(const BondState& s, const PointCloud& c, const N
     for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
       if (c.isVoid(nb.index[k])) continue;
       ++all;
-      broken += s.intact[k] ? 0 : 1;
+      broken += intact[k] ? 0 : 1;
     }
     phi[i] = all ? static_cast<double>(broken) / static_cast<double>(all) : 1.0;
   }
   return phi;
 }
 
-std::size_t brokenPairs(const BondState& s, const PointCloud& c, const Neighbours& nb) {
+std::size_t brokenPairs(const std::vector<std::uint8_t>& intact, const PointCloud& c, const Neighbours& nb) {
   std::size_t n = 0;
   for (std::size_t p = 0; p < c.size(); ++p)
     for (std::size_t k = nb.begin(p); k < nb.end(p); ++k)
-      if (nb.index[k] > p && !s.intact[k] && !c.isVoid(p) && !c.isVoid(nb.index[k])) ++n;
+      if (nb.index[k] > p && !intact[k] && !c.isVoid(p) && !c.isVoid(nb.index[k])) ++n;
   return n;
 }
 

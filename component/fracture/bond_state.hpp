@@ -41,11 +41,21 @@ std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& clou
 std::vector<double> stretchRatios(const BondState& s, const PointCloud& cloud, const Neighbours& nb,
                                   const std::vector<double>& u);
 
+// The bonds of a plate that cannot break (the elastic model): per CSR entry, 0 for bonds to Void and bonds
+// crossing one of the pre-cracks (as breakCrossing cuts them), 1 for the rest.
+std::vector<std::uint8_t> intactBonds(const PointCloud& cloud, const Neighbours& nb, const std::vector<Segment>& cracks);
+
 // 000:(3.23) over the material bonds (bonds to Void are not counted): the broken fraction of a point's
 // bonds, on the domain points in image order.
-std::vector<double> damageField(const BondState& s, const PointCloud& cloud, const Neighbours& nb);
+std::vector<double> damageField(const std::vector<std::uint8_t>& intact, const PointCloud& cloud, const Neighbours& nb);
+inline std::vector<double> damageField(const BondState& s, const PointCloud& cloud, const Neighbours& nb) {
+  return damageField(s.intact, cloud, nb);
+}
 
 // Number of broken pairs between material points (pre-crack included).
-std::size_t brokenPairs(const BondState& s, const PointCloud& cloud, const Neighbours& nb);
+std::size_t brokenPairs(const std::vector<std::uint8_t>& intact, const PointCloud& cloud, const Neighbours& nb);
+inline std::size_t brokenPairs(const BondState& s, const PointCloud& cloud, const Neighbours& nb) {
+  return brokenPairs(s.intact, cloud, nb);
+}
 
 }  // namespace peristep

@@ -5,7 +5,6 @@
 
 #include "core/parallel_errors.hpp"
 #include "random/reference_rules.hpp"
-#include "scenes/interface_crack_field.hpp"
 #include "scenes/manufactured.hpp"
 
 namespace peristep {
@@ -15,16 +14,10 @@ using Field = std::function<Vec2(double x, double y)>;
 
 // The exact local solution at physical random coordinates xi.
 Field exactField(const SceneParameters& p, const std::vector<double>& xi) {
-  if (exactSolution(p) != ExactSolution::None) {
-    std::shared_ptr<const ElasticScene> s = manufacturedScene(exactSolution(p), p.poissonRatio, xi, p.modulusContrast);
-    return [s](double x, double y) { return s->displacement(x, y); };
-  }
-  if (p.scene == SceneId::InterfaceCrack) {
-    auto f = std::make_shared<InterfaceCrackField>(2.0 + std::sin(xi[0]), 2.0 + std::sin(xi[1]), p.poissonRatio);
-    // Points on the crack line belong to the upper face, as in the scene (interface_crack.cpp).
-    return [f](double x, double y) { return f->displacement(x, std::abs(y) < 1e-12 ? +0.0 : y); };
-  }
-  return {};
+  if (exactSolution(p) == ExactSolution::None) return {};
+  std::shared_ptr<const ElasticScene> s =
+      manufacturedScene(exactSolution(p), p.poissonRatio, xi, p.modulusContrast, p.grid.h());
+  return [s](double x, double y) { return s->displacement(x, y); };
 }
 
 }  // namespace

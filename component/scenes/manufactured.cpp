@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "models/lps_material.hpp"
+#include "scenes/interface_crack.hpp"
 
 namespace peristep {
 
@@ -46,8 +47,9 @@ Vec2 CompositeScene::displacement(double x, double) const {
 }
 
 std::unique_ptr<ElasticScene> manufacturedScene(ExactSolution which, double nu, const std::vector<double>& xi,
-                                                double contrast) {
+                                                double contrast, double h) {
   if (which == ExactSolution::Smooth) return std::make_unique<SmoothScene>(nu, xi.at(0));
+  if (which == ExactSolution::InterfaceCrack) return std::make_unique<InterfaceCrackExact>(nu, xi.at(0), xi.at(1), h);
   return std::make_unique<CompositeScene>(nu, xi.at(0), xi.at(1), contrast);
 }
 

@@ -9,11 +9,11 @@
 
 namespace peristep {
 
-// The manufactured solutions below as a specimen's material, body force and
-// collar data, with errorL2 against them: Tests 1 and 2 are presets of the elastic specimen with these.
-enum class ExactSolution { None, Smooth, Composite };
+// The exact solutions of 000 Sec. 4 (below and scenes/interface_crack.hpp) as a specimen's material, body force and
+// collar data, with errorL2 against them: Tests 1-3 are presets of the elastic specimen with these.
+enum class ExactSolution { None, Smooth, Composite, InterfaceCrack };
 
-inline constexpr std::array<Option<ExactSolution>, 3> kExactSolutionOptions{{
+inline constexpr std::array<Option<ExactSolution>, 4> kExactSolutionOptions{{
     {ExactSolution::None, "none", "the maps, grips and no body force"},
     {ExactSolution::Smooth, "smooth",
      "000 Test 1: E = (2 + sin x sin y)(2 + sin 5 xi), u0 = (sin x sin y, -cos x cos y)/(2 + sin 5 xi), f = "
@@ -21,6 +21,9 @@ inline constexpr std::array<Option<ExactSolution>, 3> kExactSolutionOptions{{
     {ExactSolution::Composite, "composite",
      "000 Test 2: E = S left of x = 0 and modulusContrast S right of it, S = 3 + sin xi[0] + sin xi[1], u0 = "
      "(3x, -x)/E, no body force"},
+    {ExactSolution::InterfaceCrack, "interfaceCrack",
+     "000 Test 3: E1 = 2 + sin xi[0] above y = 0, E2 = 2 + sin xi[1] below (xi[1] in [-1, 1]), the exact near-tip "
+     "field of the interface crack on y = 0, x < 0 (give that crack as a pre-crack), no body force"},
 }};
 
 // Test 1: E = (2 + sin x sin y)(2 + sin 5 xi), u0 = (sin x sin y, -cos x cos y)/(2 + sin 5 xi),
@@ -53,9 +56,9 @@ class CompositeScene final : public ElasticScene {
   double nu_, s_, contrast_;
 };
 
-// The scene of a manufactured solution (not None) at physical random coordinates xi (Smooth reads xi[0],
-// Composite xi[0] and xi[1]).
+// The scene of an exact solution (not None) at physical random coordinates xi (Smooth reads xi[0], the
+// others xi[0] and xi[1]) on a grid of spacing h.
 std::unique_ptr<ElasticScene> manufacturedScene(ExactSolution which, double nu, const std::vector<double>& xi,
-                                                double contrast);
+                                                double contrast, double h);
 
 }  // namespace peristep

@@ -9,6 +9,7 @@
 #include "scenes/exact_moments.hpp"
 #include "scenes/glass_ceramic.hpp"
 #include "scenes/glass_ceramic_material.hpp"
+#include "scenes/interface_crack.hpp"
 #include "scenes/kl_plate.hpp"
 #include "scenes/scene_cost.hpp"
 #include "scenes/scene_runner.hpp"
@@ -19,12 +20,13 @@ SceneParameters withPreset(const SceneParameters& p) {
   SceneParameters q = p;
   if (p.scene == SceneId::GlassCeramic) q.specimen = glassCeramicPreset(p.grid, GlassCeramicSpec{}.preCrackLength);
   if (p.scene == SceneId::KlPlate) q.specimen = klPlatePreset(p.grid, p.poissonRatio);
-  if (p.scene == SceneId::Smooth || p.scene == SceneId::Composite) {
-    // Tests 1 and 2: the whole plate is the manufactured solution's (000 Sec. 4.1-4.2).
+  if (p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack) {
+    // Tests 1-3: the whole plate is the exact solution's (000 Sec. 4), Test 3 with its interface crack.
     q.specimen = SpecimenSpec{};
     q.specimen.model = SpecimenModel::Elastic;
     for (Grip& grip : q.specimen.grips) grip.held = true;
-    q.specimen.exactSolution = p.scene == SceneId::Smooth ? ExactSolution::Smooth : ExactSolution::Composite;
+    q.specimen.exactSolution = exactSolution(p);
+    if (p.scene == SceneId::InterfaceCrack) q.specimen.cracks = {interfaceCrack(p.grid)};
   }
   return q;
 }
@@ -33,6 +35,7 @@ ExactSolution exactSolution(const SceneParameters& p) {
   switch (p.scene) {
     case SceneId::Smooth: return ExactSolution::Smooth;
     case SceneId::Composite: return ExactSolution::Composite;
+    case SceneId::InterfaceCrack: return ExactSolution::InterfaceCrack;
     case SceneId::Specimen: return p.specimen.exactSolution;
     default: return ExactSolution::None;
   }
@@ -74,7 +77,7 @@ bool usesKlField(const SceneParameters& p) {
 
 XiDistribution xiDistribution(const SceneParameters& p, std::size_t k) {
   if (k >= randomCoordinates(p)) return XiDistribution::Unused;
-  return p.scene == SceneId::InterfaceCrack && k == 1 ? XiDistribution::Uniform : XiDistribution::Normal;
+  return exactSolution(p) == ExactSolution::InterfaceCrack && k == 1 ? XiDistribution::Uniform : XiDistribution::Normal;
 }
 
 double xiScale(const SceneParameters& p, std::size_t) { return exactSolution(p) == ExactSolution::Smooth ? 0.1 : 1.0; }
@@ -86,16 +89,13 @@ void validate(const SceneParameters& p) {
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p))
     validateDynamicScene(p);  // scenes 5-7: cell-centred lattices, h = Lx/nx, not Lx/(nx-1)
-  else if (p.scene == SceneId::Specimen || p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate ||
-           p.scene == SceneId::Smooth || p.scene == SceneId::Composite)
-    validate(withPreset(p).specimen, p.grid);
   else if (p.scene == SceneId::LearnedFracture)  // the sample's own grid (the runner checks nx, ny)
     require(std::isfinite(p.learnedCriticalStretch) && p.learnedCriticalStretch > 0 &&
                 std::isfinite(p.internalTimeStep) && p.internalTimeStep >= 0,
             "learnedCriticalStretch must be positive and internalTimeStep >= 0 (got " +
                 std::to_string(p.learnedCriticalStretch) + ", " + std::to_string(p.internalTimeStep) + ")");
-  else if (p.scene != SceneId::GamutBar)  // the bar is not on the plate grid (GamutBar checks its spec)
-    validate(p.grid);
+  else if (p.scene != SceneId::GamutBar)  // the specimen and its presets (the bar checks its own spec)
+    validate(withPreset(p).specimen, p.grid);
   validateElastic(1.0, p.poissonRatio);
   require(std::isfinite(p.modulusContrast) && p.modulusContrast > 0,
           "modulusContrast must be positive and finite (got " + std::to_string(p.modulusContrast) + ")");
@@ -117,7 +117,7 @@ void validate(const SceneParameters& p) {
                                                  std::to_string(p.xi.size()) + ")");
   for (std::size_t k = 0; k < p.xi.size(); ++k)
     require(std::isfinite(p.xi[k]), "xi[" + std::to_string(k) + "] is not finite");
-  if (p.scene == SceneId::InterfaceCrack)
+  if (exactSolution(p) == ExactSolution::InterfaceCrack)
     require(std::abs(p.xi[1]) <= 1.0, "xi[1] of Test 3 is uniform on [-1, 1] (got " + std::to_string(p.xi[1]) + ")");
 }
 
@@ -146,10 +146,10 @@ namespace {
 
 std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
   switch (p.scene) {
-    case SceneId::InterfaceCrack: return makeInterfaceCrackRunner(p);
     case SceneId::GlassCeramic: return makeSpecimenRunner(withPreset(p));
     case SceneId::Smooth:
     case SceneId::Composite:
+    case SceneId::InterfaceCrack:
     case SceneId::KlPlate: return makeElasticSpecimenRunner(withPreset(p));
     case SceneId::Specimen:
       return isDynamic(p)                                   ? makeDynamicRunner(p)

@@ -54,7 +54,6 @@ class Runner {
 };
 
 // `p` has been validated. Random coordinates enter in physical units (xiScale * xi).
-std::unique_ptr<Runner> makeInterfaceCrackRunner(const SceneParameters& p);  // Test 3
 std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (5-7), dynamic specimen
 std::unique_ptr<Runner> makeSpecimenRunner(const SceneParameters& p);        // quasi-static specimens (withPreset)
 std::unique_ptr<Runner> makeElasticSpecimenRunner(const SceneParameters& p);  // elastic specimens (withPreset)
@@ -62,8 +61,5 @@ std::unique_ptr<Runner> makeGamutBarRunner(const SceneParameters& p);        // 
 std::unique_ptr<Runner> makeLearnedFractureRunner(const SceneParameters& p);  // 003's prediction
 // The dynamic scenes' own checks (cell-centred lattice, integrator options); throws InvalidInput.
 void validateDynamicScene(const SceneParameters& p);
-
-// Component `component` (0: x, 1: y) of an interleaved per-point vector, on the domain points.
-std::vector<double> onDomain(const PointCloud& c, const std::vector<double>& u, int component);
 
 }  // namespace peristep

@@ -83,7 +83,7 @@ inline bool isVoidInMap(const SpecimenSpec& s, std::size_t image) {
 // a segment whose end leaves the plate or whose start lies beyond the collar, a held grip along a side where
 // the map is Void, a horizon larger than the plate, no held grip, a generated material with a model other
 // than quasiStatic, a non-finite collar gradient or one given to the dynamic model, an exact solution on
-// another model than elastic or with a free side, pre-cracks or a generated material.
+// another model than elastic or with a free side or a generated material.
 void validate(const SpecimenSpec& s, const GridSpec& grid);
 
 // Where a point of the specimen's cloud (collar included) takes its material from: the nearest image

@@ -11,8 +11,9 @@
 namespace peristep {
 
 StaticLps::StaticLps(std::shared_ptr<const LpsDiscretization> disc, const ElasticScene& scene,
-                     LinearSolverKind solver)
+                     LinearSolverKind solver, std::vector<std::uint8_t> intact)
     : disc_(std::move(disc)), scene_(&scene) {
+  loading_.intact = std::move(intact);
   const PointCloud& c = disc_->cloud;
   const double nu = scene.poissonRatio();
   validateElastic(1.0, nu);

@@ -27,8 +27,9 @@ class StaticLps {
  public:
   // Evaluates the material on every point (rejecting E <= 0 with the offending location), assembles
   // the (u, theta) system and factorizes it.
+  // intact: as in StaticLoading (the bonds across a pre-crack absent), empty when all are intact.
   StaticLps(std::shared_ptr<const LpsDiscretization> disc, const ElasticScene& scene,
-            LinearSolverKind solver = LinearSolverKind::Umfpack);
+            LinearSolverKind solver = LinearSolverKind::Umfpack, std::vector<std::uint8_t> intact = {});
   // The same without body force, for a material and collar data given as arrays (no exact solution:
   // errorL2 is not available).
   StaticLps(std::shared_ptr<const LpsDiscretization> disc, StaticLoading loading,
@@ -47,6 +48,8 @@ class StaticLps {
   // scaled by the load factor s: of the last solve, or of a given field.
   double errorL2() const { return errorL2At(ux_, uy_, load_); }
   double errorL2At(const std::vector<double>& ux, const std::vector<double>& uy, double loadFactor) const;
+  // The bonds' state (empty: all intact).
+  const std::vector<std::uint8_t>& intact() const { return loading_.intact; }
   // (u_x, u_y) of every point at the last solve: the solution, load times the collar data on the collar.
   std::vector<double> displacement() const;
   // Force of the marked collar points on the domain at the last solve [N/m] (models/collar_force.hpp).
