@@ -156,3 +156,33 @@ TEST_CASE("peristep run: scenes/glass_ceramic_specimen.toml reproduces scenes/gl
     CHECK(rows[0][i] == rows[1][i]);
   }
 }
+
+TEST_CASE("peristep run: scenes/kl_plate.toml equals the elastic specimen spelled out in a scene file",
+          "[host][run][specimen]") {
+  TempDir dir;
+  // The preset of component/scenes/kl_plate.cpp written as specimen variables, on the scene file's grid.
+  const std::size_t n = 33 * 33;
+  std::string specimen = readText(PERISTEP_SOURCE_DIR "/scenes/kl_plate.toml");
+  const std::string scene = "scene = \"klPlate\"";
+  REQUIRE(specimen.find(scene) != std::string::npos);
+  specimen.replace(specimen.find(scene), scene.size(),
+                   "scene = \"specimen\"\nspecimenModel = \"elastic\"\nmaterialField = \"klField\"\n"
+                   "materialYoungsModulus = " + tomlArray(std::vector<double>(n, 1.0)) +
+                       "\nmaterialPoissonRatio = " + tomlArray(std::vector<double>(n, 0.3)) +
+                       "\ngripLeft = \"held\"\ngripRight = \"held\"\ngripBottom = \"held\"\ngripTop = \"held\"\n"
+                       "gripBottomUy = 0.0\ngripTopUy = 0.0\ncollarDuyDy = 0.01");
+  writeText(dir / "kl_specimen.toml", specimen);
+  std::vector<std::string> rows[2];
+  const std::string files[2] = {PERISTEP_SOURCE_DIR "/scenes/kl_plate.toml", (dir / "kl_specimen.toml").string()};
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = "run" + std::to_string(k) + ".h5";
+    const ProcessResult r = runProcess({PERISTEP_HOST_BINARY, "run", files[k], "--fmu", PERISTEP_FMU, "--out", out},
+                                       dir.path());
+    INFO(r.err);
+    REQUIRE(r.exitCode == 0);
+    std::istringstream csv(readText(dir / ("run" + std::to_string(k) + ".csv")));
+    for (std::string line; std::getline(csv, line);) rows[k].push_back(line);
+  }
+  REQUIRE(rows[0].size() == 3);  // header and two load steps
+  REQUIRE(rows[0] == rows[1]);
+}
