@@ -2,7 +2,7 @@
 // (variable projection + Levenberg-Marquardt, 003 Algorithm 1 (iv)) for every (delta, P) of a grid, the pair
 // chosen by the validation residual; solvability (003:(37)) and the explicit stability limit of each kernel.
 //   learn_lps [--data data/learning/graphene_md.h5] [--deltas 10,15,20,25] [--orders 1,2,3,4] [--margin 1]
-//             [--increments]
+//             [--increments] [--s0-set fracture_train|fracture_test]
 // then s0 by a 1-D minimization on frames 5-20 of the fracture training sample (003 Algorithm 1 (v)).
 #include <algorithm>
 #include <chrono>
@@ -40,12 +40,14 @@ int main(int argc, char** argv) {
   double margin = 1.0;
   std::size_t scanStride = 8;
   bool increments = false;
+  std::string s0Set = "fracture_train";
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--deltas", deltas, "horizons [A]")->delimiter(',');
   app.add_option("--orders", orders, "Bernstein orders P")->delimiter(',');
   app.add_option("--first-frame", firstFrame, "first frame of the s0 step (003: 5)");
   app.add_option("--last-frame", lastFrame, "last frame of the s0 step (003: 20)");
   app.add_option("--scan-stride", scanStride, "print every n-th point of the s0 scan");
+  app.add_option("--s0-set", s0Set, "fracture sample of the s0 step (003: fracture_train; fracture_test: IV)");
   app.add_flag("--increments", increments, "s0 step on u - u(frame 0): frame 0 as the unstressed reference state");
   app.add_option("--margin", margin, "residual points lie this many delta inside the sheet (003: 2)");
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
@@ -108,7 +110,7 @@ int main(int argc, char** argv) {
 
     // Step 2 (003 Algorithm 1 (v)): s0 from frames first..last of the fracture training sample.
     const auto t2 = std::chrono::steady_clock::now();
-    const CoarseDataSet& frac = file.sets.at("fracture_train");
+    const CoarseDataSet& frac = file.sets.at(s0Set);
     FractureFrames frames = fractureFrames(frac);
     if (increments)
       for (std::size_t f = frames.u.size(); f-- > 0;)
