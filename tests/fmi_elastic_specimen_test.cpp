@@ -239,10 +239,20 @@ TEST_CASE("a collar gradient that cannot apply is refused with one precise messa
   SECTION("not a number") {
     requireRefused(s, "fmi3SetFloat64", "collarDuyDx", [&] { return s.setFloat64(PERISTEP_VR_COLLAR_DUY_DX, {NAN}); });
   }
-  SECTION("the generated glass-ceramic with the elastic model") {
+  SECTION("an exact solution on a plate with a free side") {
     REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, PERISTEP_SPECIMEN_ELASTIC) == fmi3OK);
+    REQUIRE(s.setInt64(PERISTEP_VR_EXACT_SOLUTION, PERISTEP_EXACT_SMOOTH) == fmi3OK);
+    requireRefused(s, "fmi3ExitInitializationMode", "it needs specimenModel elastic, every side held", exitInit);
+  }
+  SECTION("an exact solution with the fracture model") {
+    holdAllSides(s);
+    REQUIRE(s.setInt64(PERISTEP_VR_EXACT_SOLUTION, PERISTEP_EXACT_COMPOSITE) == fmi3OK);
+    requireRefused(s, "fmi3ExitInitializationMode", "it needs specimenModel elastic, every side held", exitInit);
+  }
+  SECTION("the generated glass-ceramic with the dynamic model") {
+    REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, PERISTEP_SPECIMEN_DYNAMIC) == fmi3OK);
     REQUIRE(s.setInt64(PERISTEP_VR_MATERIAL_FIELD, PERISTEP_MATERIAL_GLASS_CERAMIC) == fmi3OK);
-    requireRefused(s, "fmi3ExitInitializationMode", "materialField glassCeramic is for specimenModel quasiStatic",
+    requireRefused(s, "fmi3ExitInitializationMode", "materialField glassCeramic is for the quasi-static models",
                    exitInit);
   }
 }

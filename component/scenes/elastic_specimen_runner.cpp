@@ -8,6 +8,7 @@
 #include "core/byte_stream.hpp"
 #include "fracture/bond_state.hpp"
 #include "models/lps_material.hpp"
+#include "scenes/glass_ceramic_material.hpp"
 #include "scenes/manufactured.hpp"
 #include "scenes/map_material.hpp"
 #include "scenes/scene_runner.hpp"
@@ -52,7 +53,15 @@ class ElasticSpecimenRunner final : public Runner {
     }
     const std::shared_ptr<const LpsDiscretization> disc = discretization(specimenCloud(s, p.grid), p.grid);
     const PointCloud& c = disc->cloud;
-    const PointMaterial m = mapMaterial(c, p, retainedVariance_);
+    PointMaterial m;
+    if (s.material == SpecimenMaterial::GlassCeramic) {  // 000 Sec. 5's phases on every point
+      CrystalField field = crystalField(c, p);
+      m = phaseMaterial(c, field.R, phaseConstants(p));
+      xiScales_ = pcaScales(field);
+      if (field.pca) retainedVariance_ = field.pca->retainedFraction();
+    } else {
+      m = mapMaterial(c, p, retainedVariance_);
+    }
     StaticLoading loading;
     for (std::size_t q = 0; q < c.size(); ++q) {
       const Lame l = planeStrain(m.E[q], m.nu[q]);
@@ -94,6 +103,7 @@ class ElasticSpecimenRunner final : public Runner {
     const LpsDiscretization& d = lps_->discretization();
     return lps_->intact().empty() ? 0.0 : static_cast<double>(brokenPairs(lps_->intact(), d.cloud, d.neighbours));
   }
+  std::vector<double> xiScales() const override { return xiScales_; }
   double retainedVariance() const override { return retainedVariance_; }
   // The solution is a function of the load alone: the state is the load, the displacement and the reactions.
   std::vector<std::uint8_t> saveState() const override {
@@ -129,7 +139,8 @@ class ElasticSpecimenRunner final : public Runner {
   std::array<std::vector<std::uint8_t>, 4> collars_;
   std::vector<double> E_, u_;
   std::array<std::array<double, 2>, 4> reactions_{};
-  double retainedVariance_ = 1.0;  // of the KL modes, with a random field
+  double retainedVariance_ = 1.0;  // of the KL or PCA modes, with a random field
+  std::vector<double> xiScales_;   // of the PCA field
   PointCloud output_;
 };
 

@@ -112,4 +112,11 @@ PointMaterial phaseMaterial(const PointCloud& c, const std::vector<double>& R, c
   return mat;
 }
 
+std::vector<double> pcaScales(const CrystalField& field) {
+  std::vector<double> scales;
+  if (field.pca)
+    for (Eigen::Index k = 0; k < field.pca->variances.size(); ++k) scales.push_back(std::sqrt(field.pca->variances[k]));
+  return scales;
+}
+
 }  // namespace peristep

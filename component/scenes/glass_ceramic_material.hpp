@@ -31,6 +31,10 @@ CrystalField givenField(const PointCloud& cloud, std::vector<double> R);
 // once per process and cloud) at the coordinates xi, clipped to [0, 1]; else the microstructure of seed.
 CrystalField crystalField(const PointCloud& cloud, const SceneParameters& p);
 
+// Scales of the standardized coordinates of a PCA field: xi_k = sqrt(lambda_k) eta_k
+// (random/microstructure_pca.hpp); empty for a microstructure.
+std::vector<double> pcaScales(const CrystalField& field);
+
 // The phases of 000 Table 1 as the scene's parameters set them (glass/crystal E and G, poissonRatio).
 PhaseConstants phaseConstants(const SceneParameters& p);
 // Throws InvalidInput for a non-physical phase (E <= 0, nu outside (-1, 0.5), G <= 0).

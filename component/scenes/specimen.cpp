@@ -56,8 +56,9 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
     }
     require(anyMaterial, "materialYoungsModulus is 0 (Void) everywhere: the specimen has no material");
   }
-  require(!generated || s.model == SpecimenModel::QuasiStatic,
-          "materialField glassCeramic is for specimenModel quasiStatic (the other models read the maps)");
+  require(!generated || s.model != SpecimenModel::Dynamic,
+          "materialField glassCeramic is for the quasi-static models, quasiStatic and elastic (the dynamic model "
+          "reads the maps)");
   for (const double g : s.collarGradient) require(std::isfinite(g), "the collar gradient must be finite");
   require(s.model != SpecimenModel::Dynamic || s.collarGradient == std::array<double, 4>{},
           "the collar gradient (collarDuxDx ... collarDuyDy) moves the quasi-static models' grips; the dynamic "

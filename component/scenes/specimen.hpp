@@ -81,8 +81,8 @@ inline bool isVoidInMap(const SpecimenSpec& s, std::size_t image) {
 // Throws InvalidInput naming the first inconsistency: a map of the wrong length (a glass-ceramic specimen
 // may have none), a negative or non-finite modulus, a fracture energy or density <= 0, nu outside (-1, 0.5),
 // a segment whose end leaves the plate or whose start lies beyond the collar, a held grip along a side where
-// the map is Void, a horizon larger than the plate, no held grip, a generated material with a model other
-// than quasiStatic, a non-finite collar gradient or one given to the dynamic model, an exact solution on
+// the map is Void, a horizon larger than the plate, no held grip, a generated material with the dynamic
+// model, a non-finite collar gradient or one given to the dynamic model, an exact solution on
 // another model than elastic or with a free side or a generated material.
 void validate(const SpecimenSpec& s, const GridSpec& grid);
 

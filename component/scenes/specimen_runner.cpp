@@ -72,12 +72,7 @@ class SpecimenRunner final : public Runner {
   }
   double toughnessKIC() const override { return toughness_ ? toughness_->toughnessKIC() : 0.0; }
   bool separated() const override { return toughness_ && toughness_->crackReachedRightEdge(); }
-  std::vector<double> xiScales() const override {  // PCA: xi_k = sqrt(lambda_k) eta_k (random/microstructure_pca.hpp)
-    std::vector<double> scales;
-    if (const PcaModes* pca = toughness_ ? toughness_->field().pca.get() : nullptr)
-      for (Eigen::Index k = 0; k < pca->variances.size(); ++k) scales.push_back(std::sqrt(pca->variances[k]));
-    return scales;
-  }
+  std::vector<double> xiScales() const override { return toughness_ ? pcaScales(toughness_->field()) : std::vector<double>{}; }
   double retainedVariance() const override {
     const PcaModes* pca = toughness_ ? toughness_->field().pca.get() : nullptr;
     return pca ? pca->retainedFraction() : retainedVariance_;
