@@ -41,6 +41,15 @@ void setGradient(Session& s, const std::array<double, 4>& G) {
 constexpr std::uint64_t kNx = 21, kNy = 17;
 constexpr std::size_t kN = kNx * kNy;
 
+// A 2 x 1.6 m elastic specimen on the kNx x kNy grid (h = 0.1 m); grips at their start values.
+void elasticPlate(Session& s) {
+  configure(s, kNx, kNy, 1);
+  REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_SPECIMEN) == fmi3OK);
+  REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, PERISTEP_SPECIMEN_ELASTIC) == fmi3OK);
+  REQUIRE(s.setFloat64(PERISTEP_VR_LX, {2.0}) == fmi3OK);
+  REQUIRE(s.setFloat64(PERISTEP_VR_LY, {1.6}) == fmi3OK);
+}
+
 // Shared by the scene and its spelled-out specimen: grid, plate, field and its three coordinates.
 void klCommon(Session& s, std::int64_t scene) {
   configure(s, kNx, kNy, 3);
@@ -150,11 +159,7 @@ TEST_CASE("an elastic specimen whose collars carry a linear field takes that fie
   // the linear field solves the local problem and LPS with the weights of 000:(3.18) reproduces it.
   const std::array<double, 4> G{2e-3, 1.5e-3, -0.5e-3, 3e-3};
   Session s;
-  configure(s, kNx, kNy, 1);
-  REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_SPECIMEN) == fmi3OK);
-  REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, PERISTEP_SPECIMEN_ELASTIC) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_LX, {2.0}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_LY, {1.6}) == fmi3OK);
+  elasticPlate(s);
   REQUIRE(s.setFloat64(PERISTEP_VR_JITTER, {0.2}) == fmi3OK);  // on a jittered cloud as well
   holdAllSides(s);
   setGradient(s, G);
@@ -272,11 +277,7 @@ TEST_CASE("an elastic specimen with a floating island leaves it at rest, and eve
     if (!onIsland(i) && std::hypot(x, y) < 0.6) E[i] = 0.0;
   }
   Session s;
-  configure(s, kNx, kNy, 1);
-  REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_SPECIMEN) == fmi3OK);
-  REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, PERISTEP_SPECIMEN_ELASTIC) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_LX, {2.0}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_LY, {1.6}) == fmi3OK);
+  elasticPlate(s);
   REQUIRE(s.setFloat64(PERISTEP_VR_MATERIAL_YOUNGS_MODULUS, E) == fmi3OK);
   REQUIRE(s.initialize(0, 10) == fmi3OK);
   REQUIRE(s.step(0, 1) == fmi3OK);
