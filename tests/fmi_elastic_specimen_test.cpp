@@ -15,15 +15,6 @@
 
 namespace {
 
-// nCracks keeps its start value (one segment of length 0: none).
-void configure(Session& s, std::uint64_t nx, std::uint64_t ny, std::uint64_t nModes) {
-  const fmi3ValueReference vr[] = {PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NMODES};
-  const fmi3UInt64 v[] = {nx, ny, nModes};
-  REQUIRE(s.fmu.fmi3EnterConfigurationMode(s.instance) == fmi3OK);
-  REQUIRE(s.fmu.fmi3SetUInt64(s.instance, vr, 3, v, 3) == fmi3OK);
-  REQUIRE(s.fmu.fmi3ExitConfigurationMode(s.instance) == fmi3OK);
-}
-
 void holdAllSides(Session& s) {
   for (fmi3ValueReference vr : {PERISTEP_VR_GRIP_LEFT, PERISTEP_VR_GRIP_RIGHT, PERISTEP_VR_GRIP_BOTTOM, PERISTEP_VR_GRIP_TOP})
     REQUIRE(s.setInt64(vr, PERISTEP_GRIP_HELD) == fmi3OK);
@@ -43,7 +34,7 @@ constexpr std::size_t kN = kNx * kNy;
 
 // A 2 x 1.6 m elastic specimen on the kNx x kNy grid (h = 0.1 m); grips at their start values.
 void elasticPlate(Session& s) {
-  configure(s, kNx, kNy, 1);
+  REQUIRE(s.configure(kNx, kNy, 1) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_SPECIMEN) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, PERISTEP_SPECIMEN_ELASTIC) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_LX, {2.0}) == fmi3OK);
@@ -52,7 +43,7 @@ void elasticPlate(Session& s) {
 
 // Shared by the scene and its spelled-out specimen: grid, plate, field and its three coordinates.
 void klCommon(Session& s, std::int64_t scene) {
-  configure(s, kNx, kNy, 3);
+  REQUIRE(s.configure(kNx, kNy, 3) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SCENE, scene) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_LX, {1.25}) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_LY, {1.0}) == fmi3OK);
@@ -113,7 +104,7 @@ TEST_CASE("Tests 1-3 equal the elastic specimen with their exact solutions, bit 
     const bool test3 = scene == PERISTEP_SCENE_INTERFACE_CRACK;
     const double L = test3 ? pi : 1.0;  // Test 3 on [-pi/2, pi/2]^2 as in 000 Sec. 4.3
     const auto setUp = [&](Session& s, std::int64_t which) {
-      configure(s, n1, n1, static_cast<std::uint64_t>(nModes));
+      REQUIRE(s.configure(n1, n1, static_cast<std::uint64_t>(nModes)) == fmi3OK);
       REQUIRE(s.setInt64(PERISTEP_VR_SCENE, which) == fmi3OK);
       REQUIRE(s.setFloat64(PERISTEP_VR_LX, {L}) == fmi3OK);
       REQUIRE(s.setFloat64(PERISTEP_VR_LY, {L}) == fmi3OK);
@@ -188,7 +179,7 @@ TEST_CASE("an elastic notched plate with an inclusion and a hole solves as the f
     if (std::hypot(xOf(i) - 0.5, yOf(i) + 0.25) <= 0.12) E[i] = 0.0;
   const auto solve = [&](std::int64_t model) {
     Session s;
-    configure(s, notched_plate::kNx, notched_plate::kNy, 1);
+    REQUIRE(s.configure(notched_plate::kNx, notched_plate::kNy, 1) == fmi3OK);
     REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_SPECIMEN) == fmi3OK);
     REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, model) == fmi3OK);
     REQUIRE(s.setFloat64(PERISTEP_VR_LX, {kLx}) == fmi3OK);
@@ -228,7 +219,7 @@ TEST_CASE("an elastic notched plate with an inclusion and a hole solves as the f
 
 TEST_CASE("a collar gradient that cannot apply is refused with one precise message", "[abi][specimen][arguments]") {
   Session s;
-  configure(s, kNx, kNy, 1);
+  REQUIRE(s.configure(kNx, kNy, 1) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_SPECIMEN) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_LX, {2.0}) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_LY, {1.6}) == fmi3OK);

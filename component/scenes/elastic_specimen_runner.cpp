@@ -90,19 +90,9 @@ class ElasticSpecimenRunner final : public Runner {
   std::vector<double> youngsModulus() const override { return onImage(output_, E_, 1, 0); }
   std::array<double, 2> gripReaction(Side side) const override { return reactions_[static_cast<std::size_t>(side)]; }
   double errorL2() const override { return exact_ ? lps_->errorL2At(ux(), uy(), load_) : 0.0; }
-  // The pre-cracks' bonds (bonds to Void are no material's): 000:(3.23) and their count; nothing grows.
-  std::vector<double> damage() const override {
-    if (lps_->intact().empty()) return {};
-    const LpsDiscretization& d = lps_->discretization();
-    std::vector<double> all(d.cloud.size(), 0.0);
-    const std::vector<double> material = damageField(lps_->intact(), d.cloud, d.neighbours);
-    for (std::size_t i = 0; i < d.cloud.domain.size(); ++i) all[d.cloud.domain[i]] = material[i];
-    return onImage(output_, all, 1, 0);
-  }
-  double brokenBonds() const override {
-    const LpsDiscretization& d = lps_->discretization();
-    return lps_->intact().empty() ? 0.0 : static_cast<double>(brokenPairs(lps_->intact(), d.cloud, d.neighbours));
-  }
+  // The pre-cracks' bonds (bonds to Void are no material's): 000:(3.23) and their count, fixed at set-up.
+  std::vector<double> damage() const override { return damage_; }
+  double brokenBonds() const override { return brokenBonds_; }
   std::vector<double> xiScales() const override { return xiScales_; }
   double retainedVariance() const override { return retainedVariance_; }
   // The solution is a function of the load alone: the state is the load, the displacement and the reactions.
@@ -128,8 +118,15 @@ class ElasticSpecimenRunner final : public Runner {
  private:
   void finish(std::array<std::vector<std::uint8_t>, 4> collars) {
     collars_ = std::move(collars);
-    output_ = imageCloud(lps_->discretization().cloud);
+    const LpsDiscretization& d = lps_->discretization();
+    output_ = imageCloud(d.cloud);
     u_.assign(2 * output_.size(), 0.0);
+    if (lps_->intact().empty()) return;
+    std::vector<double> all(d.cloud.size(), 0.0);
+    const std::vector<double> material = damageField(lps_->intact(), d.cloud, d.neighbours);
+    for (std::size_t i = 0; i < d.cloud.domain.size(); ++i) all[d.cloud.domain[i]] = material[i];
+    damage_ = onImage(output_, all, 1, 0);
+    brokenBonds_ = static_cast<double>(brokenPairs(lps_->intact(), d.cloud, d.neighbours));
   }
 
   SpecimenLoad input_;
@@ -138,6 +135,8 @@ class ElasticSpecimenRunner final : public Runner {
   std::unique_ptr<StaticLps> lps_;
   std::array<std::vector<std::uint8_t>, 4> collars_;
   std::vector<double> E_, u_;
+  std::vector<double> damage_;  // empty without pre-cracks or Void: zeros
+  double brokenBonds_ = 0;
   std::array<std::array<double, 2>, 4> reactions_{};
   double retainedVariance_ = 1.0;  // of the KL or PCA modes, with a random field
   std::vector<double> xiScales_;   // of the PCA field

@@ -93,23 +93,18 @@ void StaticLps::solve(double loadFactor) {
     uy_[i] = x_[k + 1];
   }
   load_ = loadFactor;
-  times_.solve = clock.lap();
-}
-
-std::vector<double> StaticLps::displacement() const {
-  const PointCloud& c = disc_->cloud;
-  std::vector<double> u(2 * c.size(), 0.0);
-  for (std::size_t p = 0; p < c.size() && !x_.empty(); ++p)
+  u_.assign(2 * c.size(), 0.0);
+  for (std::size_t p = 0; p < c.size(); ++p)
     for (std::size_t a = 0; a < 2; ++a) {
       const std::int64_t k = disc_->dofs.u[p];
-      u[2 * p + a] = k >= 0 ? x_[static_cast<std::size_t>(k) + a] : load_ * loading_.unitCollar[2 * p + a];
+      u_[2 * p + a] = k >= 0 ? x_[static_cast<std::size_t>(k) + a] : loadFactor * loading_.unitCollar[2 * p + a];
     }
-  return u;
+  times_.solve = clock.lap();
 }
 
 std::array<double, 2> StaticLps::collarForce(const std::vector<std::uint8_t>& collar) const {
   require(!x_.empty(), "no displacement yet: solve first");
-  return peristep::collarForce(*disc_, loading_.lambda, loading_.mu, displacement(), x_, collar,
+  return peristep::collarForce(*disc_, loading_.lambda, loading_.mu, u_, x_, collar,
                                loading_.intact.empty() ? nullptr : &loading_.intact);
 }
 

@@ -51,7 +51,7 @@ class StaticLps {
   // The bonds' state (empty: all intact).
   const std::vector<std::uint8_t>& intact() const { return loading_.intact; }
   // (u_x, u_y) of every point at the last solve: the solution, load times the collar data on the collar.
-  std::vector<double> displacement() const;
+  const std::vector<double>& displacement() const { return u_; }
   // Force of the marked collar points on the domain at the last solve [N/m] (models/collar_force.hpp).
   std::array<double, 2> collarForce(const std::vector<std::uint8_t>& collar) const;
 
@@ -66,7 +66,7 @@ class StaticLps {
   std::unique_ptr<LinearSolver> solver_;
   StaticTimes times_;
   double load_ = 0;
-  std::vector<double> x_, ux_, uy_;
+  std::vector<double> x_, u_, ux_, uy_;
 };
 
 }  // namespace peristep
