@@ -150,7 +150,21 @@ enum PeriStepValueReference {
   PERISTEP_VR_COLLAR_DUX_DY = 145, /* Float64 */
   PERISTEP_VR_COLLAR_DUY_DX = 146, /* Float64 */
   PERISTEP_VR_COLLAR_DUY_DY = 147, /* Float64 */
-  PERISTEP_VR_EXACT_SOLUTION = 148 /* Enumeration: enum PeriStepExactSolution (elastic model) */
+  PERISTEP_VR_EXACT_SOLUTION = 148, /* Enumeration: enum PeriStepExactSolution (elastic model) */
+
+  /* the specimen scene, dynamic model: grip boxes (held points inside a rectangle) and a body force */
+  PERISTEP_VR_NGRIP_BOXES = 149,            /* UInt64, structural: length of the gripBox arrays */
+  PERISTEP_VR_GRIP_BOX_X0 = 150,            /* Float64[nGripBoxes], m: the box [x0, x1] x [y0, y1] */
+  PERISTEP_VR_GRIP_BOX_Y0 = 151,
+  PERISTEP_VR_GRIP_BOX_X1 = 152,
+  PERISTEP_VR_GRIP_BOX_Y1 = 153,
+  PERISTEP_VR_GRIP_BOX_HOLD = 154,          /* Enumeration[nGripBoxes]: enum PeriStepGrip (free: no box) */
+  PERISTEP_VR_GRIP_BOX_VX = 155,            /* Float64[nGripBoxes], m/s: velocity at loadFactor 1 */
+  PERISTEP_VR_GRIP_BOX_VY = 156,
+  PERISTEP_VR_BODY_FORCE_RATE_X = 157,      /* Float64[ny][nx], N/(m3 s): b = loadFactor t rate */
+  PERISTEP_VR_BODY_FORCE_RATE_Y = 158,
+  PERISTEP_VR_GRIP_BOX_REACTION_X = 159,    /* Float64[nGripBoxes], N/m: force of each box on the specimen */
+  PERISTEP_VR_GRIP_BOX_REACTION_Y = 160
 };
 
 /* Values of the enumeration PeriStep.Scene (variable "scene") */
@@ -215,11 +229,13 @@ enum PeriStepSpecimenModel {
   PERISTEP_SPECIMEN_ELASTIC = 3       /* LPS without fracture: one factorization, one solve per step (Fan et al.) */
 };
 
-/* Values of the enumeration PeriStep.Grip (variables "gripLeft" ... "gripTop", specimen scene) */
+/* Values of the enumeration PeriStep.Grip (variables "gripLeft" ... "gripTop" and "gripBoxHold", specimen scene) */
 enum PeriStepGrip {
   PERISTEP_GRIP_FREE = 1, /* traction-free side */
-  PERISTEP_GRIP_HELD = 2  /* the collar beside the side moves rigidly: by loadFactor * (gripUx, gripUy),
+  PERISTEP_GRIP_HELD = 2, /* the collar beside the side moves rigidly: by loadFactor * (gripUx, gripUy),
                              or at loadFactor * (gripVx, gripVy) in the dynamic model */
+  PERISTEP_GRIP_HELD_X = 3, /* dynamic model: held in x only (at loadFactor * gripVx), free in y */
+  PERISTEP_GRIP_HELD_Y = 4  /* dynamic model: held in y only (at loadFactor * gripVy), free in x */
 };
 
 /* Values of the enumeration PeriStep.LinearSolver (variable "linearSolver") */

@@ -28,8 +28,8 @@ using namespace peristep;
 namespace {
 
 // Every 2 mm of advance the band's extent in x (the notches point up, so an offset to the crack's left
-// is -x), then the median and widest band.
-void printCrackBands(DynamicScene& scene, const std::vector<double>& u, double t) {
+// is -x), then the median and widest band; x is measured from the beam's left end, as in 001 Sec. 6.2.
+void printCrackBands(DynamicScene& scene, const std::vector<double>& u, double t, double leftEnd) {
   std::vector<double> Z(scene.cloud.size());
   scene.model->damage(u.data(), Z.data());
   const double h = scene.h();
@@ -39,7 +39,7 @@ void printCrackBands(DynamicScene& scene, const std::vector<double>& u, double t
               t * 1e6, h * 1e3, scene.horizon() * 1e3);
   for (std::size_t k = 0; k < bands.size(); ++k) {
     const std::vector<CrackBandRow>& rows = bands[k];
-    const double x = scene.cracks[k].x1;
+    const double x = scene.cracks[k].x1 - leftEnd;
     std::printf("notch at x = %.1f mm: %zu rows, grown %.2f mm\n%12s %10s %10s %10s\n", x * 1e3, rows.size(),
                 rows.empty() ? 0.0 : rows.back().advance * 1e3, "advance mm", "x from mm", "x to mm", "width mm");
     std::vector<double> widths;
@@ -60,7 +60,7 @@ void printCrackBands(DynamicScene& scene, const std::vector<double>& u, double t
 
 int main(int argc, char** argv) {
   BendingSpec spec;
-  double eps = 0, dt = 0, T = 0, loadDepth = spec.loadDepth * 1e3;
+  double eps = 0, dt = 0, T = 0, loadDepth = spec.layout.loadDepth * 1e3;
   std::string csv;
   CLI::App app{"bending_test: the pre-cracked beam under bending of 001 Sec. 6.2"};
   app.add_option("cracks", spec.cracks, "number of pre-cracks")->required()->check(CLI::IsMember({1, 2}));
@@ -79,11 +79,11 @@ int main(int argc, char** argv) {
     spec.horizon = eps * 1e-3;
     spec.timeStep = dt * 1e-6;
     spec.endTime = T * 1e-6;
-    spec.loadDepth = loadDepth * 1e-3;
+    spec.layout.loadDepth = loadDepth * 1e-3;
     DynamicScene scene = makeBendingTest(spec);
     std::printf("bending, %d pre-crack(s): eps = %g mm, h = %g mm, %zu points, %zu bonds, dt = %g us, load band %g mm deep\n",
-                spec.cracks, spec.horizon * 1e3, scene.h() * 1e3, scene.cloud.size(), scene.model->bonds().bonds(),
-                spec.timeStep * 1e6, spec.loadDepth * 1e3);
+                spec.cracks, spec.horizon * 1e3, scene.h() * 1e3, scene.cloud.materialPoints(), scene.model->bonds().bonds(),
+                spec.timeStep * 1e6, spec.layout.loadDepth * 1e3);
     DynamicRunOptions o;
     o.reportInterval = 10e-6;
     const Stopwatch clock;
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
                 r.stats.steps,
                 static_cast<double>(scene.model->bonds().bonds()) * static_cast<double>(r.stats.steps) / clock.seconds(),
                 static_cast<double>(peakMemoryBytes()) / 1e6);
-    printCrackBands(scene, u, r.records.back().time);
+    printCrackBands(scene, u, r.records.back().time, -0.5 * spec.length);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

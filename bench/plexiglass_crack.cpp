@@ -47,7 +47,7 @@ int rates(double eps, double T, const char* csvPath) {
     });
     seconds.push_back(clock.seconds());
     std::printf("h = eps/%g: %zu points, %zu bonds, %ld steps, %.1f s, final crack length %.4f m\n", ratios[m],
-                scenes.back().cloud.size(), scenes.back().model->bonds().bonds(), r.stats.steps, seconds.back(),
+                scenes.back().cloud.materialPoints(), scenes.back().model->bonds().bonds(), r.stats.steps, seconds.back(),
                 r.records.back().crackLength);
     std::fflush(stdout);
   }
@@ -71,7 +71,8 @@ int rates(double eps, double T, const char* csvPath) {
 // crack length, with the pre-crack left out and counted (energy_table.hpp). Rows well behind the tip
 // hold G_c per unit length when the model reproduces Griffith; the rows of the process zone at the tip
 // (Z > 1 but bonds not yet fully softened) hold less.
-void crackProfile(DynamicScene& scene, const std::vector<double>& u) {
+// y is measured from D's bottom face, as in 001 Sec. 6.1.
+void crackProfile(DynamicScene& scene, const std::vector<double>& u, double bottomFace) {
   const std::size_t n = scene.cloud.size();
   const double Gc = scene.model->material().fractureEnergy(), h = scene.h();
   std::vector<double> Z(n), e(n), perRow[2] = {std::vector<double>(scene.ny, 0.0), std::vector<double>(scene.ny, 0.0)};
@@ -86,7 +87,7 @@ void crackProfile(DynamicScene& scene, const std::vector<double>& u) {
               Gc, "y [m]", "J/m^2", "/G_c", "*/G_c");
   for (std::size_t k = 0; k < scene.ny; ++k)
     if (perRow[1][k] > 0)
-      std::printf("%10.5f %12.2f %8.3f %8.3f\n", scene.y0 + static_cast<double>(k) * h, perRow[0][k], perRow[0][k] / Gc,
+      std::printf("%10.5f %12.2f %8.3f %8.3f\n", scene.y0 + static_cast<double>(k) * h - bottomFace, perRow[0][k], perRow[0][k] / Gc,
                   perRow[1][k] / Gc);
 }
 
@@ -97,7 +98,7 @@ int energy(double eps, double ratio, double T, double nu, const char* csvPath) {
   spec.material.poissonRatio = nu;
   DynamicScene scene = makePlexiglassCrack(spec);
   const double Gc = scene.model->material().fractureEnergy();
-  std::printf("eps = %g mm, h = %g mm: %zu points, %zu bonds\n", eps * 1e3, scene.h() * 1e3, scene.cloud.size(),
+  std::printf("eps = %g mm, h = %g mm: %zu points, %zu bonds\n", eps * 1e3, scene.h() * 1e3, scene.cloud.materialPoints(),
               scene.model->bonds().bonds());
   DynamicRunOptions o;
   o.endTime = T;
@@ -116,7 +117,7 @@ int energy(double eps, double ratio, double T, double nu, const char* csvPath) {
   std::printf("wall time %.1f s for %ld steps (%.3e bond-updates/s), peak memory %.0f MB\n", clock.seconds(), r.stats.steps,
               static_cast<double>(scene.model->bonds().bonds()) * static_cast<double>(r.stats.steps) / clock.seconds(),
               static_cast<double>(peakMemoryBytes()) / 1e6);
-  crackProfile(scene, u);
+  crackProfile(scene, u, -0.5 * spec.side);
   if (lengths.size() >= 2) {
     double ml = 0, me = 0, sll = 0, sle = 0;
     const double n = static_cast<double>(lengths.size());

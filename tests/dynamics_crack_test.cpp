@@ -16,7 +16,9 @@ TEST_CASE("Plexiglass crack scene: boundary conditions, energy balance and a gro
   PlexiglassCrackSpec spec;  // eps = 8 mm, h = eps/2: the coarsest level of 001 Sec. 6.1.2
   spec.meshRatio = 2;
   DynamicScene scene = makePlexiglassCrack(spec);
-  CHECK(scene.cloud.size() == 25 * 29);  // 0.1 m square plus an 8 mm collar above and below
+  std::size_t material = 0;
+  for (std::size_t p = 0; p < scene.cloud.size(); ++p) material += scene.cloud.isVoid(p) ? 0 : 1;
+  CHECK(material == 25 * 29);  // 0.1 m square plus an 8 mm collar above and below
   DynamicRunOptions o;
   o.reportInterval = 2e-6;
   const DynamicRunResult r = runDynamicScene(scene, o);

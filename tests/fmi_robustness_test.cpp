@@ -36,8 +36,8 @@ void expectRefusedSetUp(Session& s, const std::vector<std::string>& fragments) {
 void plexiglass(Session& s) {
   REQUIRE(s.configure(25, 25) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_PLEXIGLASS_CRACK) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_LX, {0.1}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_LY, {0.1}) == fmi3OK);
+  REQUIRE(s.setFloat64(PERISTEP_VR_LX, {0.096}) == fmi3OK);  // h = 4 mm: the cells span 0.1 m
+  REQUIRE(s.setFloat64(PERISTEP_VR_LY, {0.096}) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_DELTA_OVER_H, {2.0}) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_POISSON_RATIO, {0.25}) == fmi3OK);
 }

@@ -39,7 +39,7 @@ inline void setUpCoarseScene(Session& s, std::int64_t scene) {
       return;
     case PERISTEP_SCENE_PLEXIGLASS_CRACK:
       grid(25, 25, 1);
-      domain(0.1, 0.1, 0.25);
+      domain(0.096, 0.096, 0.25);  // h = 4 mm: the cells span 0.1 m
       REQUIRE(s.setFloat64(PERISTEP_VR_DELTA_OVER_H, {2.0}) == fmi3OK);
       return;
     case PERISTEP_SCENE_LEARNED_FRACTURE: grid(20, 20, 1); return;  // sample III at h = 5 A
@@ -50,7 +50,7 @@ inline void setUpCoarseScene(Session& s, std::int64_t scene) {
     case PERISTEP_SCENE_BENDING_ONE_NOTCH:
     case PERISTEP_SCENE_BENDING_TWO_NOTCHES:
       grid(80, 16, 1);
-      domain(0.25, 0.05, 0.25);
+      domain(0.25 - 3.125e-3, 0.05 - 3.125e-3, 0.25);  // h = 3.125 mm: the cells span 0.25 x 0.05 m
       return;
   }
   FAIL("no coarse set-up for scene " << scene);

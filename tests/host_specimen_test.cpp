@@ -23,6 +23,18 @@ std::string tomlArray(const std::vector<double>& v) {
   return s.str();
 }
 
+// `peristep run` of a scene file in dir, its CSV's lines (the run's outputs go to dir/<name>.h5, .csv).
+std::vector<std::string> csvRows(const TempDir& dir, const std::string& sceneFile, const std::string& name) {
+  const ProcessResult r =
+      runProcess({PERISTEP_HOST_BINARY, "run", sceneFile, "--fmu", PERISTEP_FMU, "--out", name + ".h5"}, dir.path());
+  INFO(r.err);
+  REQUIRE(r.exitCode == 0);
+  std::vector<std::string> rows;
+  std::istringstream csv(readText(dir / (name + ".csv")));
+  for (std::string line; std::getline(csv, line);) rows.push_back(line);
+  return rows;
+}
+
 }  // namespace
 
 TEST_CASE("peristep run: a specimen described in the scene file cracks from its notch past the inclusion",
@@ -172,17 +184,39 @@ TEST_CASE("peristep run: scenes/kl_plate.toml equals the elastic specimen spelle
                        "\ngripLeft = \"held\"\ngripRight = \"held\"\ngripBottom = \"held\"\ngripTop = \"held\"\n"
                        "gripBottomUy = 0.0\ngripTopUy = 0.0\ncollarDuyDy = 0.01");
   writeText(dir / "kl_specimen.toml", specimen);
-  std::vector<std::string> rows[2];
-  const std::string files[2] = {PERISTEP_SOURCE_DIR "/scenes/kl_plate.toml", (dir / "kl_specimen.toml").string()};
-  for (int k = 0; k < 2; ++k) {
-    const std::string out = "run" + std::to_string(k) + ".h5";
-    const ProcessResult r = runProcess({PERISTEP_HOST_BINARY, "run", files[k], "--fmu", PERISTEP_FMU, "--out", out},
-                                       dir.path());
-    INFO(r.err);
-    REQUIRE(r.exitCode == 0);
-    std::istringstream csv(readText(dir / ("run" + std::to_string(k) + ".csv")));
-    for (std::string line; std::getline(csv, line);) rows[k].push_back(line);
-  }
-  REQUIRE(rows[0].size() == 3);  // header and two load steps
-  REQUIRE(rows[0] == rows[1]);
+  const std::vector<std::string> preset = csvRows(dir, PERISTEP_SOURCE_DIR "/scenes/kl_plate.toml", "preset");
+  REQUIRE(preset.size() == 3);  // header and two load steps
+  REQUIRE(preset == csvRows(dir, (dir / "kl_specimen.toml").string(), "specimen"));
+}
+
+TEST_CASE("peristep run: the Plexiglass crack equals the dynamic specimen spelled out in a scene file",
+          "[host][run][specimen][dynamics]") {
+  TempDir dir;
+  // tests/data/host/plexiglass_small.toml (20 x 20 points, h = 5 mm, eps = 20 mm) with the preset of
+  // component/scenes/plexiglass_crack.cpp written as specimen variables: strips of grip boxes eps deep, the
+  // top one held in x, the bottom one split at x = 0 and pulled apart at 1 m/s; the pre-crack up to 0.02 m
+  // above the bottom face. The tip, -0.05 + 0.1/5 in double arithmetic, is -0.030000000000000002: it lies on
+  // the midpoints of diagonal bonds across the crack line, so the last bit decides whether they are cut.
+  const std::string small = PERISTEP_SOURCE_DIR "/tests/data/host/plexiglass_small.toml";
+  std::string specimen = readText(small);
+  const std::string step = "internalTimeStep = 0.0\n";  // the preset's: 001's 0.004 us
+  REQUIRE(specimen.find(step) != std::string::npos);
+  specimen.erase(specimen.find(step), step.size());
+  const std::string scene = "scene = \"plexiglassCrack\"";
+  REQUIRE(specimen.find(scene) != std::string::npos);
+  const std::size_t n = 20 * 20;
+  specimen.replace(specimen.find(scene), scene.size(),
+                   "scene = \"specimen\"\nspecimenModel = \"dynamic\"\nnCracks = 1\nnGripBoxes = 3\n"
+                   "materialYoungsModulus = " + tomlArray(std::vector<double>(n, 37.5e9)) +
+                       "\ngripBottom = \"free\"\ngripTop = \"free\"\n"
+                       "gripBoxHold = [\"heldX\", \"heldX\", \"heldX\"]\n"
+                       "gripBoxX0 = [-0.05, -0.05, -0.00125]\ngripBoxX1 = [0.05, 0.00125, 0.05]\n"
+                       "gripBoxY0 = [0.05, -0.07, -0.07]\ngripBoxY1 = [0.07, -0.05, -0.05]\n"
+                       "gripBoxVx = [0.0, -1.0, 1.0]\n"
+                       "crackX0 = [0.0]\ncrackY0 = [-0.07]\ncrackX1 = [0.0]\ncrackY1 = [-0.030000000000000002]\n"
+                       "internalTimeStep = 0.004e-6");
+  writeText(dir / "plexiglass_specimen.toml", specimen);
+  const std::vector<std::string> preset = csvRows(dir, small, "preset");
+  REQUIRE(preset.size() == 6);  // header and five steps
+  REQUIRE(preset == csvRows(dir, (dir / "plexiglass_specimen.toml").string(), "specimen"));
 }

@@ -39,6 +39,26 @@ void gripReaction(P, M m, std::span<double> out) {
 }
 
 std::vector<double> copied(std::span<const double> v) { return {v.begin(), v.end()}; }
+// A map of zeros is none: the scene then carries no array for it.
+std::vector<double> nonZero(std::span<const double> v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return x == 0; }) ? std::vector<double>{} : copied(v);
+}
+
+// The components a held grip or box prescribes (the enumeration's values are checked when they are set).
+HeldComponents heldComponents(std::int64_t grip) {
+  return grip == PERISTEP_GRIP_HELD_X ? HeldComponents::X
+         : grip == PERISTEP_GRIP_HELD_Y ? HeldComponents::Y
+                                        : HeldComponents::Both;
+}
+
+// Reaction of the grip boxes, one per entry of gripBoxHold: the model numbers the held ones only.
+template <int component>
+void boxReactions(P p, M m, std::span<double> out) {
+  const auto hold = p.get<std::int64_t>(PERISTEP_VR_GRIP_BOX_HOLD);
+  std::size_t held = 0;
+  for (std::size_t b = 0; b < out.size(); ++b)
+    out[b] = hold[b] == PERISTEP_GRIP_FREE ? 0.0 : m->boxReaction(held++)[component];
+}
 
 SpecimenSpec specimen(const ParameterValues& v) {
   SpecimenSpec s;
@@ -65,11 +85,18 @@ SpecimenSpec specimen(const ParameterValues& v) {
        PERISTEP_VR_GRIP_TOP_VY}};
   for (std::size_t k = 0; k < 4; ++k) {
     const std::int64_t grip = v.scalar<std::int64_t>(grips[k][0]);
-    if (grip != PERISTEP_GRIP_FREE && grip != PERISTEP_GRIP_HELD)
-      throw InvalidInput("unknown grip " + std::to_string(grip));
-    s.grips[k] = {grip == PERISTEP_GRIP_HELD, v.scalar<double>(grips[k][1]), v.scalar<double>(grips[k][2]),
-                  v.scalar<double>(grips[k][3]), v.scalar<double>(grips[k][4])};
+    s.grips[k] = {grip != PERISTEP_GRIP_FREE, v.scalar<double>(grips[k][1]), v.scalar<double>(grips[k][2]),
+                  v.scalar<double>(grips[k][3]), v.scalar<double>(grips[k][4]), heldComponents(grip)};
   }
+  const auto hold = v.get<std::int64_t>(PERISTEP_VR_GRIP_BOX_HOLD);
+  const auto bx0 = v.get<double>(PERISTEP_VR_GRIP_BOX_X0), by0 = v.get<double>(PERISTEP_VR_GRIP_BOX_Y0);
+  const auto bx1 = v.get<double>(PERISTEP_VR_GRIP_BOX_X1), by1 = v.get<double>(PERISTEP_VR_GRIP_BOX_Y1);
+  const auto bvx = v.get<double>(PERISTEP_VR_GRIP_BOX_VX), bvy = v.get<double>(PERISTEP_VR_GRIP_BOX_VY);
+  for (std::size_t b = 0; b < hold.size(); ++b)  // a free box is none
+    if (hold[b] != PERISTEP_GRIP_FREE)
+      s.boxes.push_back({bx0[b], by0[b], bx1[b], by1[b], bvx[b], bvy[b], heldComponents(hold[b])});
+  s.bodyForceRateX = nonZero(v.get<double>(PERISTEP_VR_BODY_FORCE_RATE_X));
+  s.bodyForceRateY = nonZero(v.get<double>(PERISTEP_VR_BODY_FORCE_RATE_Y));
   s.collarGradient = {v.scalar<double>(PERISTEP_VR_COLLAR_DUX_DX), v.scalar<double>(PERISTEP_VR_COLLAR_DUX_DY),
                       v.scalar<double>(PERISTEP_VR_COLLAR_DUY_DX), v.scalar<double>(PERISTEP_VR_COLLAR_DUY_DY)};
   return s;
@@ -89,7 +116,7 @@ GamutBarSpec gamutBar(const ParameterValues& v) {
   return s;
 }
 
-const std::array<ComputedVariable, 38> kComputed{{
+const std::array<ComputedVariable, 40> kComputed{{
     {PERISTEP_VR_XI_DISTRIBUTION, Needs::Parameters, nullptr,
      [](P p, M, std::span<std::int32_t> out) {
        const SceneParameters s = sceneParameters(p);
@@ -132,6 +159,8 @@ const std::array<ComputedVariable, 38> kComputed{{
     {PERISTEP_VR_REACTION_BOTTOM_Y, Needs::Solution, gripReaction<Side::Bottom, 1>},
     {PERISTEP_VR_REACTION_TOP_X, Needs::Solution, gripReaction<Side::Top, 0>},
     {PERISTEP_VR_REACTION_TOP_Y, Needs::Solution, gripReaction<Side::Top, 1>},
+    {PERISTEP_VR_GRIP_BOX_REACTION_X, Needs::Solution, boxReactions<0>},
+    {PERISTEP_VR_GRIP_BOX_REACTION_Y, Needs::Solution, boxReactions<1>},
     {PERISTEP_VR_BAR_STRESS, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->barStress(); }},
     {PERISTEP_VR_BAR_STRAIN, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->barStrain(); }},
     {PERISTEP_VR_CYCLIC_EXPONENT, Needs::Solution,

@@ -17,7 +17,7 @@ using I = Initial;
 using T = VarType;
 
 constexpr fmi3ValueReference kNx = PERISTEP_VR_NX, kNy = PERISTEP_VR_NY, kModes = PERISTEP_VR_NMODES,
-                             kCracks = PERISTEP_VR_NCRACKS;
+                             kCracks = PERISTEP_VR_NCRACKS, kBoxes = PERISTEP_VR_NGRIP_BOXES;
 
 // Images are [ny][nx]: the outer dimension is ny (FMI arrays are row-major).
 std::vector<fmi3ValueReference> image() { return {kNy, kNx}; }
@@ -54,14 +54,19 @@ std::vector<Variable> makeTable() {
        .description = "Specimen scene: number of pre-crack segments (length of crackX0, crackY0, crackX1, crackY1)",
        .start = "1", .min = Bound{1}, .max = Bound{1024}},
 
+      {.name = "nGripBoxes", .vr = PERISTEP_VR_NGRIP_BOXES, .type = T::UInt64, .causality = C::StructuralParameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene: number of grip boxes (length of the gripBox arrays)", .start = "1",
+       .min = Bound{1}, .max = Bound{1024}},
+
       {.name = "scene", .vr = PERISTEP_VR_SCENE, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact, .description = "Built-in scene",
        .declaredType = "PeriStep.Scene", .start = "1"},
       {.name = "Lx", .vr = PERISTEP_VR_LX, .type = T::Float64, .causality = C::Parameter, .variability = V::Fixed,
        .initial = I::Exact,
-       .description = "Domain width, > 0. Quasi-static scenes and specimen: a vertex grid on [-Lx/2, Lx/2] x "
-                      "[-Ly/2, Ly/2], points on the edges, h = Lx/(nx-1) = Ly/(ny-1); dynamic scenes: a cell-centred "
-                      "lattice on [0, Lx] x [0, Ly], each point the centre of an h x h cell, h = Lx/nx = Ly/ny",
+       .description = "Width spanned by the points, > 0: every scene's grid has its nx x ny points on [-Lx/2, "
+                      "Lx/2] x [-Ly/2, Ly/2], h = Lx/(nx-1) = Ly/(ny-1), each point carrying the h x h cell around "
+                      "it (the dynamic scenes' material is those cells: a plate Lx + h wide)",
        .unit = "m", .start = "1", .min = Bound{0, true}},
       {.name = "Ly", .vr = PERISTEP_VR_LY, .type = T::Float64, .causality = C::Parameter, .variability = V::Fixed,
        .initial = I::Exact, .description = "Domain height, > 0", .unit = "m", .start = "1",
@@ -227,6 +232,15 @@ std::vector<Variable> makeTable() {
        .description = "Specimen and glassCeramic scenes: y-force of the top grip on the specimen per "
                       "unit thickness (0 when free)",
        .unit = "N/m", .dependencies = onBothLoads()},
+      {.name = "gripBoxReactionX", .vr = PERISTEP_VR_GRIP_BOX_REACTION_X, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene, dynamic model: x-force of each grip box on the specimen per unit thickness "
+                      "in its held components (0 for a free box)",
+       .unit = "N/m", .dimensions = {kBoxes}, .dependencies = onBothLoads()},
+      {.name = "gripBoxReactionY", .vr = PERISTEP_VR_GRIP_BOX_REACTION_Y, .type = T::Float64, .causality = C::Output,
+       .variability = V::Continuous, .initial = I::Calculated,
+       .description = "Specimen scene, dynamic model: y-force of each grip box on the specimen per unit thickness",
+       .unit = "N/m", .dimensions = {kBoxes}, .dependencies = onBothLoads()},
       {.name = "reactionForce", .vr = PERISTEP_VR_REACTION_FORCE, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
        .description = "y-force per unit thickness of the top collar on the specimen (glass-ceramic scene and "
@@ -486,6 +500,47 @@ std::vector<Variable> makeTable() {
                       "point at (x, y) moves by loadFactor * (gripUx + collarDuxDx x + collarDuxDy y, gripUy + "
                       "collarDuyDx x + collarDuyDy y))",
        .start = "0"},
+      {.name = "gripBoxX0", .vr = PERISTEP_VR_GRIP_BOX_X0, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: left edge of each grip box [x0, x1] x [y0, y1], a closed rectangle "
+                      "whose points (domain or collar, beside a free side too) move at loadFactor * (gripBoxVx, "
+                      "gripBoxVy) in the components gripBoxHold names; a point in several boxes goes with the first",
+       .unit = "m", .start = "0", .dimensions = {kBoxes}},
+      {.name = "gripBoxY0", .vr = PERISTEP_VR_GRIP_BOX_Y0, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: bottom edge of each grip box",
+       .unit = "m", .start = "0", .dimensions = {kBoxes}},
+      {.name = "gripBoxX1", .vr = PERISTEP_VR_GRIP_BOX_X1, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: right edge of each grip box, >= gripBoxX0",
+       .unit = "m", .start = "0", .dimensions = {kBoxes}},
+      {.name = "gripBoxY1", .vr = PERISTEP_VR_GRIP_BOX_Y1, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: top edge of each grip box, >= gripBoxY0",
+       .unit = "m", .start = "0", .dimensions = {kBoxes}},
+      {.name = "gripBoxHold", .vr = PERISTEP_VR_GRIP_BOX_HOLD, .type = T::Enumeration, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: what each grip box holds (free: the box is none; held, heldX, "
+                      "heldY: both components or one)",
+       .declaredType = "PeriStep.Grip", .start = "1", .dimensions = {kBoxes}},
+      {.name = "gripBoxVx", .vr = PERISTEP_VR_GRIP_BOX_VX, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: x-velocity of each grip box's points at loadFactor 1",
+       .unit = "m/s", .start = "0", .dimensions = {kBoxes}},
+      {.name = "gripBoxVy", .vr = PERISTEP_VR_GRIP_BOX_VY, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: y-velocity of each grip box's points at loadFactor 1",
+       .unit = "m/s", .start = "0", .dimensions = {kBoxes}},
+      {.name = "bodyForceRateX", .vr = PERISTEP_VR_BODY_FORCE_RATE_X, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: growth rate of the x body force on each domain point, "
+                      "b_x = loadFactor * t * bodyForceRateX (t: time since the run began)",
+       .unit = "N/(m3.s)", .start = "0", .dimensions = image()},
+      {.name = "bodyForceRateY", .vr = PERISTEP_VR_BODY_FORCE_RATE_Y, .type = T::Float64, .causality = C::Parameter,
+       .variability = V::Fixed, .initial = I::Exact,
+       .description = "Specimen scene, dynamic model: growth rate of the y body force on each domain point, "
+                      "b_y = loadFactor * t * bodyForceRateY",
+       .unit = "N/(m3.s)", .start = "0", .dimensions = image()},
 
       // The papers' material constants; a scene reads only its own.
       {.name = "glassYoungsModulus", .vr = PERISTEP_VR_GLASS_YOUNGS_MODULUS, .type = T::Float64,
@@ -639,11 +694,13 @@ const std::vector<EnumerationType>& enumerationTypes() {
       {"PeriStep.SpecimenModel", "Models of the specimen scene",
        enumerationItems(kSpecimenModelValues, kSpecimenModelOptions)},
       {"PeriStep.Grip",
-       "How a side of the specimen is loaded",
+       "How a side or a grip box of the specimen is held",
        {{"free", PERISTEP_GRIP_FREE, "Traction-free: no collar beside the side"},
         {"held", PERISTEP_GRIP_HELD,
          "The collar beside the side moves rigidly: by loadFactor * (gripUx, gripUy), or at loadFactor * (gripVx, "
-         "gripVy) in the dynamic model"}}},
+         "gripVy) in the dynamic model"},
+        {"heldX", PERISTEP_GRIP_HELD_X, "Dynamic model: held in x only (at loadFactor * gripVx), free in y"},
+        {"heldY", PERISTEP_GRIP_HELD_Y, "Dynamic model: held in y only (at loadFactor * gripVy), free in x"}}},
       {"PeriStep.LinearSolver", "Sparse solvers of the (u, theta) system",
        enumerationItems(kLinearSolverValues, kLinearSolverOptions)},
       {"PeriStep.Covariance", "Covariance kernels of the KL field",
@@ -669,7 +726,8 @@ const std::vector<UnitDefinition>& unitDefinitions() {
       {.name = "s", .s = 1}, {.name = "m", .m = 1}, {.name = "m/s", .m = 1, .s = -1}, {.name = "N/m", .kg = 1, .s = -2},
       {.name = "Pa", .kg = 1, .m = -1, .s = -2},
       {.name = "J/m", .kg = 1, .m = 1, .s = -2}, {.name = "J/m2", .kg = 1, .s = -2},
-      {.name = "kg/m3", .kg = 1, .m = -3}, {.name = "Pa.m^0.5", .integerPowers = false}};
+      {.name = "kg/m3", .kg = 1, .m = -3}, {.name = "N/(m3.s)", .kg = 1, .m = -2, .s = -3},
+      {.name = "Pa.m^0.5", .integerPowers = false}};
   return units;
 }
 

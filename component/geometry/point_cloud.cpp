@@ -17,20 +17,15 @@ void validateHorizon(double deltaOverH) {
           "deltaOverH must be <= " + numberText(kMaxDeltaOverH) + " (got " + numberText(deltaOverH) + ")");
 }
 
-void validate(const GridSpec& s, GridLayout layout) {
+void validate(const GridSpec& s) {
   require(s.nx >= kMinPointsPerSide && s.ny >= kMinPointsPerSide,
           "empty domain: nx and ny must both be at least " + std::to_string(kMinPointsPerSide) + " (got nx = " +
                                       std::to_string(s.nx) + ", ny = " + std::to_string(s.ny) + ")");
   require(std::isfinite(s.Lx) && std::isfinite(s.Ly) && s.Lx > 0 && s.Ly > 0,
           "empty domain: Lx and Ly must be positive and finite");
-  const bool cells = layout == GridLayout::CellCentred;
-  const double intervals = cells ? 0.0 : 1.0;
-  const double hx = s.Lx / (static_cast<double>(s.nx) - intervals), hy = s.Ly / (static_cast<double>(s.ny) - intervals);
-  require(std::abs(hx - hy) <= 1e-9 * hx,
-          cells ? "grid spacing must be uniform: the dynamic scenes use cell-centred lattices with h = Lx/nx = Ly/ny, "
-                  "but Lx/nx = " + std::to_string(hx) + " m and Ly/ny = " + std::to_string(hy) + " m"
-                : "grid spacing must be uniform: Lx/(nx-1) = " + std::to_string(hx) + " but Ly/(ny-1) = " +
-                      std::to_string(hy));
+  const double hx = s.Lx / (static_cast<double>(s.nx) - 1), hy = s.Ly / (static_cast<double>(s.ny) - 1);
+  require(std::abs(hx - hy) <= 1e-9 * hx, "grid spacing must be uniform: Lx/(nx-1) = " + std::to_string(hx) +
+                                              " but Ly/(ny-1) = " + std::to_string(hy));
   validateHorizon(s.deltaOverH);
   require(std::isfinite(s.jitter) && s.jitter >= 0.0 && s.jitter < kMaxJitter,
           "jitter must lie in [0, " + numberText(kMaxJitter) + ") grid spacings (got " + numberText(s.jitter) + ")");

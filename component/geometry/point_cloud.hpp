@@ -1,5 +1,6 @@
 #pragma once
 // Point clouds on a rectangular domain with a Dirichlet collar (000 Sec. 2.1, Sec. 3.1).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -33,13 +34,9 @@ inline constexpr double kMinDeltaOverH = 1.0, kMaxDeltaOverH = 20.0;
 inline constexpr double kMaxJitter = 0.5;
 inline constexpr std::size_t kMinPointsPerSide = 2;  // nx and ny
 
-// How nx points span Lx: on the vertices, h = Lx/(nx-1) (the quasi-static scenes and the specimen), or at
-// the centres of nx cells, h = Lx/nx (the dynamic scenes' lattices).
-enum class GridLayout { Vertex, CellCentred };
-
 // Throws InvalidInput with a precise message when the spec cannot describe a valid cloud: the one check of
 // the grid's sizes, spacing, horizon and jitter for every scene.
-void validate(const GridSpec& spec, GridLayout layout = GridLayout::Vertex);
+void validate(const GridSpec& spec);
 // The one check of the horizon's range: throws InvalidInput outside [kMinDeltaOverH, kMaxDeltaOverH].
 void validateHorizon(double deltaOverH);
 
@@ -60,6 +57,10 @@ struct PointCloud {
   std::size_t size() const { return x.size(); }
   bool inDomain(std::size_t p) const { return region[p] == Region::Domain; }
   bool isVoid(std::size_t p) const { return region[p] == Region::Void; }
+  // Points with material: domain and held collar (Void ones are placeholders of the grid).
+  std::size_t materialPoints() const {
+    return static_cast<std::size_t>(std::count_if(region.begin(), region.end(), [](Region r) { return r != Region::Void; }));
+  }
 
   // Collar points beside the left/right edges (within the domain's y range) become Void: those edges
   // are free. The corner blocks stay with the top and bottom collars.

@@ -1,15 +1,10 @@
 // The dynamic fracture scenes of 001 Sec. 6 behind the Runner face: each advance integrates one
 // communication interval with the scene's time integrator, as many internal steps as it needs.
 //
-// How the grid parameters map onto the scenes (cell-centred lattices, 001 Sec. 4: every node is the
-// centre of an h x h cell, so nx nodes span Lx with h = Lx/nx, unlike the vertex grids of scenes 1-4):
-//   h = Lx/nx = Ly/ny, horizon eps = deltaOverH h; jitter must be 0.
-//   5 Plexiglass crack (001 Sec. 6.1): D = [0, Lx]^2 (nx = ny), pre-crack Lx/5 from the bottom centre
-//     (0.02 m at Lx = 0.1 m), collars eps thick, so deltaOverH must be a whole number. The paper's runs:
-//     Lx = 0.1 m, eps = 8, 4, 2 mm, h = eps/2, eps/4, eps/8 (e.g. nx = 50, deltaOverH = 4: eps = 8 mm).
-//   6, 7 bending (001 Sec. 6.2): D = [0, Lx] x [0, Ly]; pre-cracks, supports and load band sit where
-//     bending_test.hpp puts them on the 0.25 x 0.05 m beam, scaled by Lx/0.25 in x and Ly/0.05 in y.
-//   9 specimen with the dynamic model: its own vertex grid and grips (scenes/dynamic_specimen.cpp).
+// Every dynamic scene is a specimen with the dynamic model (scenes/dynamic_specimen.cpp): the importer's,
+// or the preset of a scene of 001 Sec. 6 (scenes/plexiglass_crack.hpp, scenes/bending_test.hpp; the
+// scene model applies it, withPreset), on the vertex grid of every scene (h = Lx/(nx-1); each point the
+// centre of an h x h cell of material).
 // loadFactor scales the loads from each communication point on: the pull velocity of the Plexiglass
 // strips (1 m/s at loadFactor 1) and the bending body force f_max t. The material is that of 001 Table 1
 // from poissonRatio (0.25 in the paper), bulkModulus, criticalEnergyReleaseRate and density.
@@ -24,9 +19,7 @@
 #include "core/errors.hpp"
 #include "core/number_text.hpp"
 #include "models/state_based_material.hpp"
-#include "scenes/bending_test.hpp"
 #include "scenes/fracture_diagnostics.hpp"
-#include "scenes/plexiglass_crack.hpp"
 #include "scenes/scene_runner.hpp"
 #include "solvers/time_integrator.hpp"
 
@@ -35,48 +28,11 @@ namespace {
 
 std::string text(double x) { return numberText(x); }
 
-constexpr double kBeamLength = 0.25, kBeamDepth = 0.05;  // the beam bending_test.hpp describes [m]
-
-double spacing(const SceneParameters& p) { return p.grid.Lx / static_cast<double>(p.grid.nx); }
-
-DynamicScene makeScene(const SceneParameters& p) {
-  if (p.scene == SceneId::Specimen) return makeDynamicSpecimen(p);
-  const StateBasedInput material = dynamicMaterial(p);
-  const double h = spacing(p), eps = p.grid.deltaOverH * h;
-  if (p.scene == SceneId::PlexiglassCrack) {
-    PlexiglassCrackSpec s;
-    s.horizon = eps;
-    s.meshRatio = p.grid.deltaOverH;
-    s.side = p.grid.Lx;
-    s.crackLength = p.grid.Lx / 5;
-    s.material = material;
-    return makePlexiglassCrack(s);
-  }
-  BendingSpec s;
-  const double sx = p.grid.Lx / kBeamLength, sy = p.grid.Ly / kBeamDepth;
-  s.cracks = p.scene == SceneId::BendingOneNotch ? 1 : 2;
-  s.horizon = eps;
-  s.meshRatio = p.grid.deltaOverH;
-  s.length = p.grid.Lx;
-  s.depth = p.grid.Ly;
-  s.crackLength *= sy;
-  s.loadDepth *= sy;
-  s.crackOffset *= sx;
-  s.supportCentre *= sx;
-  s.supportHalfWidth *= sx;
-  s.loadHalfWidth *= sx;
-  s.material = material;
-  return makeBendingTest(s);
-}
-
-// The material nodes (D, collars excluded) as the cloud whose domain the outputs are written on;
-// lattice nodes are numbered row by row, so D's nodes in lattice order are an [ny][nx] image. A specimen
-// names its image points itself (Void ones read 0: they carry no bonds and never move).
+// The specimen's image points, Void ones included (they read 0: no bonds, never moving), as the domain the
+// outputs are written on.
 PointCloud outputCloud(const DynamicScene& scene) {
   PointCloud c = scene.cloud;
   c.domain = scene.outputPoints;
-  for (std::size_t p = 0; scene.outputPoints.empty() && p < c.size(); ++p)
-    if (scene.material[p]) c.domain.push_back(p);
   return c;
 }
 
@@ -90,10 +46,9 @@ std::vector<double> onMaterial(const PointCloud& c, const double* field, std::si
 class DynamicRunner final : public Runner {
  public:
   explicit DynamicRunner(const SceneParameters& p)
-      : scene_(makeScene(p)),
+      : scene_(makeDynamicSpecimen(p)),
         output_(outputCloud(scene_)),
         diagnostics_(scene_),
-        youngsModulus_(3.0 * p.bulkModulus * (1.0 - 2.0 * p.poissonRatio)),
         fixedStep_(p.timeIntegrator == TimeIntegratorKind::CentralDifference),
         maxSteps_(p.limits.internalSteps),
         progress_(p.progress) {
@@ -141,16 +96,19 @@ class DynamicRunner final : public Runner {
 
   void measure() {
     record_ = diagnostics_.measure(*integrator_);
-    if (std::all_of(scene_.grips.begin(), scene_.grips.end(), [](const auto& g) { return g.empty(); })) return;
-    // A grip's force on the specimen is minus the specimen's on the collar: the internal forces among the
-    // collar's own points cancel pairwise.
+    if (std::all_of(scene_.grips.begin(), scene_.grips.end(), [](const auto& g) { return g.points.empty(); })) return;
+    // A grip's force on the specimen in a held component is minus the internal force on its points (their
+    // acceleration there is prescribed); the forces among a collar's own points cancel pairwise.
     std::vector<double> f(scene_.problem->dofs());
     scene_.model->force(integrator_->displacement(), f.data());
     const double V = scene_.model->pointVolume(0);
-    for (std::size_t k = 0; k < 4; ++k) {
-      reactions_[k] = {0.0, 0.0};
-      for (std::size_t q : scene_.grips[k])
-        for (std::size_t d = 0; d < 2; ++d) reactions_[k][d] -= f[2 * q + d] * V;
+    reactions_.assign(scene_.grips.size(), {0.0, 0.0});
+    for (std::size_t k = 0; k < scene_.grips.size(); ++k) {
+      const DynamicScene::HeldPoints& grip = scene_.grips[k];
+      for (std::size_t q : grip.points) {
+        if (grip.x) reactions_[k][0] -= f[2 * q] * V;
+        if (grip.y) reactions_[k][1] -= f[2 * q + 1] * V;
+      }
     }
   }
 
@@ -179,11 +137,12 @@ class DynamicRunner final : public Runner {
 
   std::vector<double> ux() const override { return onMaterial(output_, integrator_->displacement(), 2, 0); }
   std::vector<double> uy() const override { return onMaterial(output_, integrator_->displacement(), 2, 1); }
-  std::vector<double> youngsModulus() const override {
-    if (!scene_.youngsModulus.empty()) return onMaterial(output_, scene_.youngsModulus.data(), 1, 0);
-    return std::vector<double>(output_.domain.size(), youngsModulus_);
+  std::vector<double> youngsModulus() const override { return onMaterial(output_, scene_.youngsModulus.data(), 1, 0); }
+  std::array<double, 2> gripReaction(Side side) const override { return reaction(static_cast<std::size_t>(side)); }
+  std::array<double, 2> boxReaction(std::size_t box) const override { return reaction(4 + box); }
+  std::array<double, 2> reaction(std::size_t grip) const {
+    return grip < reactions_.size() ? reactions_[grip] : std::array<double, 2>{0.0, 0.0};
   }
-  std::array<double, 2> gripReaction(Side side) const override { return reactions_[static_cast<std::size_t>(side)]; }
   // Z of 001:(104) (> 1 where the bond strain has passed the softening point).
   std::vector<double> damage() const override { return onMaterial(output_, diagnostics_.damage().data(), 1, 0); }
   double crackLength() const override { return record_.crackLength; }
@@ -228,7 +187,6 @@ class DynamicRunner final : public Runner {
   DynamicScene scene_;
   PointCloud output_;
   FractureDiagnostics diagnostics_;  // refers to scene_
-  double youngsModulus_;  // the 3D relation 001 Table 1 is computed with: E = 3 K (1 - 2 nu)
   static constexpr double kPieceSteps = 1000;
 
   bool fixedStep_;           // central difference: the step count of an interval is known up front
@@ -237,7 +195,7 @@ class DynamicRunner final : public Runner {
   double timeStep_ = 0;
   std::unique_ptr<TimeIntegrator> integrator_;
   EnergyRecord record_;
-  std::array<std::array<double, 2>, 4> reactions_{};  // of the specimen's grips, by Side
+  std::vector<std::array<double, 2>> reactions_;  // of the specimen's grips (scene_.grips)
 };
 
 }  // namespace
@@ -253,18 +211,11 @@ StateBasedInput dynamicMaterial(const SceneParameters& p) {
 
 void validateDynamicScene(const SceneParameters& p) {
   const GridSpec& g = p.grid;
-  if (p.scene == SceneId::Specimen)
-    validate(p.specimen, g);  // the specimen's vertex grid, the same for both of its models
-  else
-    validate(g, GridLayout::CellCentred);
+  validate(withPreset(p).specimen, g);
   require(g.jitter == 0, "the dynamic scenes need a lattice: jitter must be 0 (got " + std::to_string(g.jitter) + ")");
-  if (p.scene == SceneId::PlexiglassCrack) {
+  if (p.scene == SceneId::PlexiglassCrack)
     require(g.nx == g.ny, "the Plexiglass crack is a square: nx must equal ny (got nx = " + std::to_string(g.nx) +
                               ", ny = " + std::to_string(g.ny) + ")");
-    require(std::abs(g.deltaOverH - std::round(g.deltaOverH)) < 1e-9,
-            "the Plexiglass collars are one horizon thick: deltaOverH must be a whole number (got " +
-                std::to_string(g.deltaOverH) + ")");
-  }
   require(std::isfinite(p.internalTimeStep) && p.internalTimeStep >= 0,
           "internalTimeStep must be >= 0 s (0: the scene's step), got " + std::to_string(p.internalTimeStep));
   require(std::isfinite(p.integratorTolerance) && p.integratorTolerance > 0,

@@ -14,7 +14,7 @@
 namespace peristep {
 
 struct DynamicScene {
-  PointCloud cloud;                         // cell-centred lattice (collars included)
+  PointCloud cloud;                         // square lattice, collars included
   std::size_t nx = 0, ny = 0;               // lattice size, row-major
   double x0 = 0, y0 = 0;                    // coordinates of node (0, 0)
   std::vector<char> material;               // 1 on the material domain D (diagnostics), 0 on collars
@@ -25,22 +25,35 @@ struct DynamicScene {
   double timeStep = 0, endTime = 0;         // the paper's choices for this scene
   // The specimen's own (empty for the papers' scenes): the points written to the [ny][nx] image outputs,
   // Void ones included (empty: the material nodes in lattice order); Young's modulus per point (empty:
-  // 3 K (1 - 2 nu) everywhere); the collar points of each held side, by Side.
+  // 3 K (1 - 2 nu) everywhere); the points each grip holds and in which components: the sides' collars by
+  // Side, then the grip boxes.
+  struct HeldPoints {
+    std::vector<std::size_t> points;
+    bool x = true, y = true;
+  };
   std::vector<std::size_t> outputPoints;
   std::vector<double> youngsModulus;
-  std::array<std::vector<std::size_t>, 4> grips;
+  std::vector<HeldPoints> grips;
 
   double h() const { return cloud.h; }
   double horizon() const { return model->bonds().horizon; }
 };
 
 struct SceneParameters;
-// The importer's specimen (SceneId::Specimen) with SpecimenModel::Dynamic: its cloud, Void and pre-cracks,
-// the state-based material of p (bulkModulus, poissonRatio, criticalEnergyReleaseRate) with the stiffness
-// factor E/(3 K (1 - 2 nu)) of each point's materialYoungsModulus (times the KL factor) and its
-// materialDensity, and each held grip's collar moving at loadFactor * (vx, vy). Time step: 0.8 of the estimated stability limit of
-// central difference (solvers/stability_limit.hpp).
+struct SpecimenSpec;
+// A specimen with SpecimenModel::Dynamic (the importer's, or the preset of scenes 5-7): its cloud, Void and
+// pre-cracks, the state-based material of p (bulkModulus, poissonRatio, criticalEnergyReleaseRate) with the
+// stiffness factor E/(3 K (1 - 2 nu)) of each point's materialYoungsModulus (times the KL factor) and its
+// materialDensity, each grip's points moving at loadFactor * (vx, vy) in its held components, and the body
+// force loadFactor * t * bodyForceRate. Time step: p.internalTimeStep, or 0 for 0.8 of the estimated
+// stability limit of central difference (solvers/stability_limit.hpp).
 DynamicScene makeDynamicSpecimen(const SceneParameters& p);
+// A dynamic preset (scenes 5-7) built for a bench or test without the FMU: maps of one material (E = 3 K
+// (1 - 2 nu), 001 Table 1's relation, so the stiffness factor is 1), and the scene of a preset's grips and
+// loads on `grid` with that material and the paper's time step and end time.
+void assignUniformMaterial(SpecimenSpec& s, std::size_t points, const StateBasedInput& material);
+DynamicScene makeDynamicPreset(const GridSpec& grid, const StateBasedInput& material, SpecimenSpec preset,
+                               double timeStep, double endTime);
 // The material of 001 Table 1 as the parameters set it (bulkModulus, poissonRatio,
 // criticalEnergyReleaseRate, density).
 StateBasedInput dynamicMaterial(const SceneParameters& p);

@@ -1,5 +1,5 @@
 #pragma once
-// Convergence-rate estimate of 001 Sec. 6.1.2 for displacement fields on nested cell-centred lattices.
+// Convergence-rate estimate of 001 Sec. 6.1.2 for displacement fields on nested lattices of square cells.
 #include "scenes/dynamic_scene.hpp"
 
 namespace peristep {

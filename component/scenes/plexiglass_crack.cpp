@@ -4,57 +4,43 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "geometry/point_cloud.hpp"
 
 namespace peristep {
 
-DynamicScene makePlexiglassCrack(const PlexiglassCrackSpec& s) {
-  validateHorizon(s.meshRatio);
-  require(s.horizon > 0 && s.side > 0 && s.crackLength > 0 && s.crackLength < s.side,
-          "Plexiglass crack: a positive horizon and side and 0 < crack length < side are required");
-  const double eps = s.horizon, L = s.side;
-  const double h = eps / s.meshRatio;
-  const double cellsAcross = L / h, collarCells = eps / h;
-  require(std::abs(cellsAcross - std::round(cellsAcross)) < 1e-6 && std::abs(collarCells - std::round(collarCells)) < 1e-6,
-          "Plexiglass crack: h = eps/(eps/h) must divide the side and the horizon (h = " + std::to_string(h) + " m)");
-  const auto nx = static_cast<std::size_t>(std::llround(cellsAcross));
-  const auto nc = static_cast<std::size_t>(std::llround(collarCells));
+SpecimenSpec plexiglassCrackPreset(const GridSpec& g, const StateBasedInput& material, double pullVelocity) {
+  const double h = g.h(), eps = g.delta(), X = 0.5 * g.Lx, Y = 0.5 * g.Ly;
+  const double L = g.Lx + h, bottomFace = -Y - 0.5 * h;
+  SpecimenSpec s;
+  s.model = SpecimenModel::Dynamic;
+  assignUniformMaterial(s, g.nx * g.ny, material);
+  // Boxes reach half a spacing past the rows they hold, so no point sits on an edge; the middle column
+  // (odd nx) lies in both bottom boxes and goes with the first, the left one.
+  const double top0 = Y + 0.5 * h, top1 = Y + eps + 0.5 * h, bottom0 = -Y - eps - 0.5 * h, bottom1 = -Y - 0.5 * h;
+  const double left = -X - 0.5 * h, right = X + 0.5 * h, middle = 0.25 * h;
+  s.boxes = {{.x0 = left, .y0 = top0, .x1 = right, .y1 = top1, .vx = 0, .components = HeldComponents::X},
+             {.x0 = left, .y0 = bottom0, .x1 = middle, .y1 = bottom1, .vx = -pullVelocity, .components = HeldComponents::X},
+             {.x0 = -middle, .y0 = bottom0, .x1 = right, .y1 = bottom1, .vx = pullVelocity, .components = HeldComponents::X}};
+  s.cracks = {Segment{0.0, bottom0, 0.0, bottomFace + L / 5}};
+  return s;
+}
 
-  DynamicScene scene;
-  scene.nx = nx;
-  scene.ny = nx + 2 * nc;
-  scene.x0 = 0.5 * h;
-  scene.y0 = -eps + 0.5 * h;
-  scene.cloud = cellCentredLattice(scene.nx, scene.ny, h, scene.x0, scene.y0);
-  const PointCloud& c = scene.cloud;
-  const double xc = 0.5 * L, tol = 1e-9 * h;
-  scene.cracks = {Segment{xc, -eps - h, xc, s.crackLength}};
+GridSpec plexiglassCrackGrid(const PlexiglassCrackSpec& spec) {
+  validateHorizon(spec.meshRatio);
+  require(spec.horizon > 0 && spec.side > 0, "Plexiglass crack: a positive horizon and side are required");
+  const double h = spec.horizon / spec.meshRatio, cells = spec.side / h;
+  require(std::abs(cells - std::round(cells)) < 1e-6,
+          "Plexiglass crack: h = eps/(eps/h) = " + std::to_string(h) + " m must divide the side");
+  GridSpec g;
+  g.nx = g.ny = static_cast<std::size_t>(std::llround(cells));
+  g.Lx = g.Ly = spec.side - h;
+  g.deltaOverH = spec.meshRatio;
+  return g;
+}
 
-  const StateBasedInput& in = s.material;
-  StateBasedBondOptions bo;
-  bo.horizon = eps;
-  bo.cuts = scene.cracks;
-  scene.model = std::make_unique<StateBasedModel>(makeStateBasedMaterial(in, eps), buildStateBasedBonds(c, bo));
-  scene.problem = std::make_unique<DynamicProblem>(*scene.model, in.density);
-
-  std::vector<std::uint32_t> top, left, right;
-  scene.material.assign(c.size(), 0);
-  for (std::size_t p = 0; p < c.size(); ++p) {
-    const auto dx = static_cast<std::uint32_t>(2 * p);
-    if (c.y[p] > L)
-      top.push_back(dx);
-    else if (c.y[p] < 0)
-      (c.x[p] <= xc + tol ? left : right).push_back(dx);  // the crack's left face takes nodes on its line
-    else
-      scene.material[p] = 1;
-  }
-  scene.problem->prescribeVelocity(top, 0.0);
-  scene.problem->prescribeVelocity(left, -s.pullVelocity);
-  scene.problem->prescribeVelocity(right, s.pullVelocity);
-  scene.adjacent = findNeighbours(c, 1.5 * h);
-  scene.timeStep = s.timeStep;
-  scene.endTime = s.endTime;
-  return scene;
+DynamicScene makePlexiglassCrack(const PlexiglassCrackSpec& spec) {
+  const GridSpec g = plexiglassCrackGrid(spec);
+  return makeDynamicPreset(g, spec.material, plexiglassCrackPreset(g, spec.material, spec.pullVelocity), spec.timeStep,
+                           spec.endTime);
 }
 
 }  // namespace peristep

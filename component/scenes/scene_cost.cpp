@@ -97,10 +97,11 @@ Part klField(const SceneParameters& p) {
   return m;
 }
 
-// The dynamic scenes: a cell-centred lattice with collars one horizon wide and the state-based bonds
-// (index, two directions, two weights); no factorization.
+// The dynamic scenes: the specimen's lattice with its collars (2 delta, Void where nothing holds them) and
+// at most as many state-based bonds (index, two directions, two weights) as if every point had material;
+// no factorization.
 Part dynamicSetUp(const GridSpec& g) {
-  const double collar = std::ceil(g.deltaOverH - 1e-9);
+  const auto collar = static_cast<double>(collarLayers(g.deltaOverH));
   const double points = (static_cast<double>(g.nx) + 2 * collar) * (static_cast<double>(g.ny) + 2 * collar);
   const double bonds = points * std::numbers::pi * g.deltaOverH * g.deltaOverH;
   Part m;

@@ -6,11 +6,13 @@
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
 #include "models/lps_material.hpp"
+#include "scenes/bending_test.hpp"
 #include "scenes/exact_moments.hpp"
 #include "scenes/glass_ceramic.hpp"
 #include "scenes/glass_ceramic_material.hpp"
 #include "scenes/interface_crack.hpp"
 #include "scenes/kl_plate.hpp"
+#include "scenes/plexiglass_crack.hpp"
 #include "scenes/scene_cost.hpp"
 #include "scenes/scene_runner.hpp"
 
@@ -28,6 +30,12 @@ SceneParameters withPreset(const SceneParameters& p) {
     q.specimen.exactSolution = exactSolution(p);
     if (p.scene == SceneId::InterfaceCrack) q.specimen.cracks = {interfaceCrack(p.grid)};
   }
+  // 001 Sec. 6: the dynamic scenes, each with the paper's step unless one is set.
+  const bool bending = p.scene == SceneId::BendingOneNotch || p.scene == SceneId::BendingTwoNotches;
+  if (p.scene == SceneId::PlexiglassCrack) q.specimen = plexiglassCrackPreset(p.grid, dynamicMaterial(p));
+  if (bending) q.specimen = bendingPreset(p.grid, p.scene == SceneId::BendingOneNotch ? 1 : 2, dynamicMaterial(p));
+  if (p.internalTimeStep == 0 && (bending || p.scene == SceneId::PlexiglassCrack))
+    q.internalTimeStep = bending ? kBendingTimeStep : kPlexiglassTimeStep;
   return q;
 }
 
@@ -88,7 +96,7 @@ void validate(const SceneParameters& p) {
               p.scene == SceneId::GamutBar || p.scene == SceneId::LearnedFracture || isDynamic(p),
           "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p))
-    validateDynamicScene(p);  // scenes 5-7: cell-centred lattices, h = Lx/nx, not Lx/(nx-1)
+    validateDynamicScene(p);  // the specimen with the dynamic model and scenes 5-7, its presets
   else if (p.scene == SceneId::LearnedFracture)  // the sample's own grid (the runner checks nx, ny)
     require(std::isfinite(p.learnedCriticalStretch) && p.learnedCriticalStretch > 0 &&
                 std::isfinite(p.internalTimeStep) && p.internalTimeStep >= 0,
@@ -159,7 +167,7 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
     case SceneId::LearnedFracture: return makeLearnedFractureRunner(p);
     case SceneId::PlexiglassCrack:
     case SceneId::BendingOneNotch:
-    case SceneId::BendingTwoNotches: return makeDynamicRunner(p);
+    case SceneId::BendingTwoNotches: return makeDynamicRunner(withPreset(p));
   }
   throw InvalidInput("unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
 }
@@ -232,6 +240,7 @@ double SceneModel::fractureEnergy() const { return impl_->runner->fractureEnergy
 double SceneModel::toughnessKIC() const { return impl_->runner->toughnessKIC(); }
 bool SceneModel::separated() const { return impl_->runner->separated(); }
 std::array<double, 2> SceneModel::gripReaction(Side side) const { return impl_->runner->gripReaction(side); }
+std::array<double, 2> SceneModel::boxReaction(std::size_t box) const { return impl_->runner->boxReaction(box); }
 double SceneModel::strainEnergy() const { return impl_->runner->strainEnergy(); }
 double SceneModel::kineticEnergy() const { return impl_->runner->kineticEnergy(); }
 double SceneModel::externalWork() const { return impl_->runner->externalWork(); }

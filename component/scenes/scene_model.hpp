@@ -172,6 +172,8 @@ class SceneModel {
   bool separated() const;
   // Specimen scene: (x, y) force of a held grip's collar on the specimen [N/m]; 0 for a free one.
   std::array<double, 2> gripReaction(Side side) const;
+  // Dynamic specimen: (x, y) force of its held grip box `box` (numbered among the held ones) [N/m].
+  std::array<double, 2> boxReaction(std::size_t box) const;
   // Dynamic scenes (0 otherwise), per unit thickness: elastic energy PD(u) 001:(11), kinetic energy,
   // work of the loads since the start; and the force evaluations the integrator has spent.
   double strainEnergy() const;

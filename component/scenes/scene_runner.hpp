@@ -30,6 +30,7 @@ class Runner {
   virtual double fractureEnergy() const { return 0.0; }
   virtual double toughnessKIC() const { return 0.0; }
   virtual std::array<double, 2> gripReaction(Side) const { return {0.0, 0.0}; }  // specimen scene
+  virtual std::array<double, 2> boxReaction(std::size_t) const { return {0.0, 0.0}; }  // its held grip boxes
   // The test is over: the crack has crossed the specimen (000 Sec. 5 ends its test there).
   virtual bool separated() const { return false; }
   // Scales of the standardized coordinates when they come from the field itself (PCA); empty: the
@@ -59,7 +60,8 @@ std::unique_ptr<Runner> makeSpecimenRunner(const SceneParameters& p);        // 
 std::unique_ptr<Runner> makeElasticSpecimenRunner(const SceneParameters& p);  // elastic specimens (withPreset)
 std::unique_ptr<Runner> makeGamutBarRunner(const SceneParameters& p);        // 002's 1D bar
 std::unique_ptr<Runner> makeLearnedFractureRunner(const SceneParameters& p);  // 003's prediction
-// The dynamic scenes' own checks (cell-centred lattice, integrator options); throws InvalidInput.
+// The dynamic scenes' own checks (the preset's specimen, a lattice without jitter, integrator options);
+// throws InvalidInput.
 void validateDynamicScene(const SceneParameters& p);
 
 }  // namespace peristep

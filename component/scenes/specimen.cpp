@@ -80,7 +80,8 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
                 ", " + text(c.y1) + ") m leaves the plate [" + text(-X) + ", " + text(X) + "] x [" + text(-Y) +
                 ", " + text(Y) + "] m (its start may lie in the collar, 2 delta = " + text(collar) + " m wide)");
   }
-  bool anyHeld = false;
+  const bool dynamic = s.model == SpecimenModel::Dynamic;
+  bool anyHeld = !s.boxes.empty();
   for (std::size_t k = 0; k < 4; ++k) {
     const Grip& grip = s.grips[k];
     if (!grip.held) continue;
@@ -90,8 +91,28 @@ void validate(const SpecimenSpec& s, const GridSpec& g) {
     require(std::isfinite(grip.vx) && std::isfinite(grip.vy), name + " needs a finite velocity");
     require(s.youngsModulus.empty() || materialAlong(s.youngsModulus, g, static_cast<Side>(k)),
             name + " holds a side along which materialYoungsModulus is 0 (Void): it would hold nothing");
+    require(dynamic || grip.components == HeldComponents::Both,
+            name + " holds one component only (heldX, heldY): that is for specimenModel dynamic; the quasi-static "
+                   "models hold a collar in both");
+  }
+  for (std::size_t b = 0; b < s.boxes.size(); ++b) {
+    const GripBox& box = s.boxes[b];
+    const std::string name = "grip box " + std::to_string(b);
+    require(dynamic, name + " is given, but grip boxes hold points of specimenModel dynamic only");
+    require(std::isfinite(box.x0) && std::isfinite(box.y0) && std::isfinite(box.x1) && std::isfinite(box.y1) &&
+                box.x0 <= box.x1 && box.y0 <= box.y1,
+            name + " [" + text(box.x0) + ", " + text(box.x1) + "] x [" + text(box.y0) + ", " + text(box.y1) +
+                "] m needs finite corners with x0 <= x1 and y0 <= y1");
+    require(std::isfinite(box.vx) && std::isfinite(box.vy), name + " needs a finite velocity");
   }
   require(anyHeld, "every grip is free: hold at least one side, or the specimen floats");
+  for (const auto* rate : {&s.bodyForceRateX, &s.bodyForceRateY}) {
+    if (rate->empty()) continue;
+    require(dynamic, "a body force (bodyForceRateX, bodyForceRateY) is for specimenModel dynamic only");
+    require(rate->size() == n, "bodyForceRate has " + std::to_string(rate->size()) + " values for the " +
+                                   std::to_string(n) + " points of the grid");
+    for (const double r : *rate) require(std::isfinite(r), "bodyForceRate must be finite everywhere");
+  }
   if (s.exactSolution != ExactSolution::None) {
     const bool allHeld = std::all_of(s.grips.begin(), s.grips.end(), [](const Grip& g) { return g.held; });
     require(s.model == SpecimenModel::Elastic && allHeld && s.material == SpecimenMaterial::Maps,
@@ -119,7 +140,10 @@ PointCloud specimenCloud(const SpecimenSpec& s, const GridSpec& g) {
   for (std::size_t q = 0; q < c.size(); ++q) {
     const ImageSource n = imageSource(c, q);
     const bool voidMap = isVoidInMap(s, n.image);
-    if (voidMap || (n.inCollar && !s.grips[static_cast<std::size_t>(n.side)].held)) c.region[q] = Region::Void;
+    const bool inBox = std::any_of(s.boxes.begin(), s.boxes.end(),
+                                   [&](const GripBox& b) { return b.contains(c.x[q], c.y[q]); });
+    const bool held = s.grips[static_cast<std::size_t>(n.side)].held || inBox;
+    if (voidMap || (n.inCollar && !held)) c.region[q] = Region::Void;
     else if (!n.inCollar) domain.push_back(q);
   }
   c.domain = std::move(domain);
@@ -155,6 +179,15 @@ CollarMotion collarMotion(const SpecimenSpec& s, const PointCloud& c) {
     m.unit[2 * q + 1] = s.grips[k].uy + G[2] * c.x[q] + G[3] * c.y[q];
   }
   return m;
+}
+
+int gripOf(const SpecimenSpec& s, const PointCloud& c, std::size_t q) {
+  if (c.isVoid(q)) return -1;
+  for (std::size_t b = 0; b < s.boxes.size(); ++b)
+    if (s.boxes[b].contains(c.x[q], c.y[q])) return static_cast<int>(4 + b);
+  const ImageSource src = imageSource(c, q);
+  const bool held = src.inCollar && s.grips[static_cast<std::size_t>(src.side)].held;
+  return held ? static_cast<int>(src.side) : -1;
 }
 
 }  // namespace peristep

@@ -47,6 +47,9 @@ enum class SpecimenMaterial { Maps, KlField, GlassCeramic };
 // glassCeramic scene's U_D; its grips' displacements are then per metre of U_D).
 enum class SpecimenLoad { LoadFactor, LoadDisplacement };
 
+// Which displacement components a grip prescribes: both, or (dynamic model) one, the other left free.
+enum class HeldComponents { Both, X, Y };
+
 // A held side's collar moves rigidly: by load * (ux, uy) in the quasi-static models (plus the specimen's
 // collar gradient), at the velocity load * (vx, vy) in the dynamic one. A free side has no collar
 // (traction-free).
@@ -54,6 +57,18 @@ struct Grip {
   bool held = false;
   double ux = 0, uy = 0;  // [m] at load 1
   double vx = 0, vy = 0;  // [m/s] at load 1
+  HeldComponents components = HeldComponents::Both;
+};
+
+// Dynamic model: the points of the specimen's cloud inside the closed rectangle [x0, x1] x [y0, y1] (domain
+// points as well as collar points, which then exist beside a free side too) move at load * (vx, vy) in the
+// held components; a point in several boxes goes with the first. Supports inside a beam, a collar split in
+// two, a strip along part of a side.
+struct GripBox {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [m]
+  double vx = 0, vy = 0;                  // [m/s] at load 1
+  HeldComponents components = HeldComponents::Both;
+  bool contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
 };
 
 struct SpecimenSpec {
@@ -63,6 +78,10 @@ struct SpecimenSpec {
   std::vector<double> density;  // [kg/m^3], read by the dynamic model
   std::vector<Segment> cracks;  // pre-cracks (of positive length): bonds crossing one are broken from the start
   std::array<Grip, 4> grips{};  // by Side
+  std::vector<GripBox> boxes;   // dynamic model
+  // Dynamic model: a body force growing linearly in time, b = load * t * rate, per domain point [N/(m^3 s)]
+  // (empty: none).
+  std::vector<double> bodyForceRateX, bodyForceRateY;
   // Quasi-static models: every held collar point (x, y) also moves by load * G (x, y), G = {du_x/dx,
   // du_x/dy, du_y/dx, du_y/dy}: a homogeneous strain or rotation imposed on the whole boundary.
   std::array<double, 4> collarGradient{};
@@ -83,7 +102,8 @@ inline bool isVoidInMap(const SpecimenSpec& s, std::size_t image) {
 // a segment whose end leaves the plate or whose start lies beyond the collar, a held grip along a side where
 // the map is Void, a horizon larger than the plate, no held grip, a generated material with the dynamic
 // model, a non-finite collar gradient or one given to the dynamic model, an exact solution on
-// another model than elastic or with a free side or a generated material.
+// another model than elastic or with a free side or a generated material, a grip of one component, a grip
+// box or a body force given to a quasi-static model, a box that holds no material point.
 void validate(const SpecimenSpec& s, const GridSpec& grid);
 
 // Where a point of the specimen's cloud (collar included) takes its material from: the nearest image
@@ -96,8 +116,8 @@ struct ImageSource {
 ImageSource imageSource(const PointCloud& cloud, std::size_t p);
 
 // The specimen's cloud: the vertex grid with a collar 2 delta thick on every side (000 Sec. 2.1), of which
-// the points beside a free side or beside Void, and the map's Void points, are Void. The domain lists the
-// material points in image order.
+// the points beside a free side (unless a grip box holds them) or beside Void, and the map's Void points,
+// are Void. The domain lists the material points in image order.
 PointCloud specimenCloud(const SpecimenSpec& s, const GridSpec& grid);
 
 // The cloud a specimen's outputs are written on: `cloud` with every image point, material or Void, as its
@@ -114,5 +134,9 @@ struct CollarMotion {
   std::vector<double> unit;
 };
 CollarMotion collarMotion(const SpecimenSpec& s, const PointCloud& cloud);
+
+// The grip that holds point q of the specimen's cloud: index k < 4 the side k's collar, 4 + b the grip box b;
+// -1 for none (a free point, or a Void one).
+int gripOf(const SpecimenSpec& s, const PointCloud& cloud, std::size_t q);
 
 }  // namespace peristep
