@@ -375,22 +375,22 @@ std::vector<Variable> makeTable() {
       {.name = "gripLeft", .vr = PERISTEP_VR_GRIP_LEFT, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: the left side (x = -Lx/2), free or held by its collar (the collar's "
-                      "corners go with bottom and top)",
+                      "corners go with bottom and top); the dynamic model may hold one component (heldX, heldY)",
        .declaredType = "PeriStep.Grip", .start = "1"},
       {.name = "gripRight", .vr = PERISTEP_VR_GRIP_RIGHT, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: the right side (x = Lx/2), free or held by its collar (the collar's "
-                      "corners go with bottom and top)",
+                      "corners go with bottom and top); the dynamic model may hold one component (heldX, heldY)",
        .declaredType = "PeriStep.Grip", .start = "1"},
       {.name = "gripBottom", .vr = PERISTEP_VR_GRIP_BOTTOM, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: the bottom side (y = -Ly/2), free or held by its collar (the collar's "
-                      "corners go with bottom and top)",
+                      "corners go with bottom and top); the dynamic model may hold one component (heldX, heldY)",
        .declaredType = "PeriStep.Grip", .start = "2"},
       {.name = "gripTop", .vr = PERISTEP_VR_GRIP_TOP, .type = T::Enumeration, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
        .description = "Specimen scene: the top side (y = Ly/2), free or held by its collar (the collar's "
-                      "corners go with bottom and top)",
+                      "corners go with bottom and top); the dynamic model may hold one component (heldX, heldY)",
        .declaredType = "PeriStep.Grip", .start = "2"},
       {.name = "gripLeftUx", .vr = PERISTEP_VR_GRIP_LEFT_UX, .type = T::Float64, .causality = C::Parameter,
        .variability = V::Fixed, .initial = I::Exact,
