@@ -92,10 +92,12 @@ class Session {
 
   // Configuration Mode round trip for the structural parameters.
   fmi3Status configure(std::uint64_t nx, std::uint64_t ny, std::uint64_t nModes = 1) {
-    const fmi3ValueReference vr[] = {PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NMODES};
-    const fmi3UInt64 v[] = {nx, ny, nModes};
+    return configureStructural({PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NMODES}, {nx, ny, nModes});
+  }
+  fmi3Status configureStructural(const std::vector<fmi3ValueReference>& vrs, const std::vector<fmi3UInt64>& values) {
     if (const auto s = fmu.fmi3EnterConfigurationMode(instance); s != fmi3OK) return s;
-    if (const auto s = fmu.fmi3SetUInt64(instance, vr, 3, v, 3); s != fmi3OK) return s;
+    if (const auto s = fmu.fmi3SetUInt64(instance, vrs.data(), vrs.size(), values.data(), values.size()); s != fmi3OK)
+      return s;
     return fmu.fmi3ExitConfigurationMode(instance);
   }
   fmi3Status setFloat64(fmi3ValueReference vr, std::vector<double> values) {

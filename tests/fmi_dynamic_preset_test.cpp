@@ -28,11 +28,8 @@ struct Segment {
 // A dynamic specimen of one material on an nx x ny grid spanning Lx x Ly, every side free, held by boxes.
 void setUpSpecimen(Session& s, std::uint64_t nx, std::uint64_t ny, double Lx, double Ly, double deltaOverH,
                    const std::vector<Box>& boxes, const std::vector<Segment>& cracks) {
-  const fmi3ValueReference vr[] = {PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NCRACKS, PERISTEP_VR_NGRIP_BOXES};
-  const fmi3UInt64 v[] = {nx, ny, cracks.size(), boxes.size()};
-  REQUIRE(s.fmu.fmi3EnterConfigurationMode(s.instance) == fmi3OK);
-  REQUIRE(s.fmu.fmi3SetUInt64(s.instance, vr, 4, v, 4) == fmi3OK);
-  REQUIRE(s.fmu.fmi3ExitConfigurationMode(s.instance) == fmi3OK);
+  REQUIRE(s.configureStructural({PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NCRACKS, PERISTEP_VR_NGRIP_BOXES},
+                                {nx, ny, cracks.size(), boxes.size()}) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_SPECIMEN) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, PERISTEP_SPECIMEN_DYNAMIC) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_LX, {Lx}) == fmi3OK);

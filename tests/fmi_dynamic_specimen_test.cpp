@@ -8,7 +8,7 @@
 
 #include "fmi_abi_support.hpp"
 #include "fmi_refusal.hpp"
-#include "notched_plate.hpp"
+#include "fmi_notched_plate.hpp"
 
 using namespace notched_plate;
 
@@ -21,11 +21,7 @@ constexpr double kHoleX = 0.5, kHoleY = -0.25, kHoleR = 0.15;
 bool inHole(std::size_t i) { return std::hypot(xOf(i) - kHoleX, yOf(i) - kHoleY) <= kHoleR; }
 
 void setUpDynamicPlate(Session& s) {
-  const fmi3ValueReference vr[] = {PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NCRACKS};
-  const fmi3UInt64 v[] = {kNx, kNy, 1};
-  REQUIRE(s.fmu.fmi3EnterConfigurationMode(s.instance) == fmi3OK);
-  REQUIRE(s.fmu.fmi3SetUInt64(s.instance, vr, 3, v, 3) == fmi3OK);
-  REQUIRE(s.fmu.fmi3ExitConfigurationMode(s.instance) == fmi3OK);
+  REQUIRE(s.configureStructural({PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NCRACKS}, {kNx, kNy, 1}) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SCENE, PERISTEP_SCENE_SPECIMEN) == fmi3OK);
   REQUIRE(s.setInt64(PERISTEP_VR_SPECIMEN_MODEL, PERISTEP_SPECIMEN_DYNAMIC) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_LX, {kLx}) == fmi3OK);
@@ -34,10 +30,7 @@ void setUpDynamicPlate(Session& s) {
   for (std::size_t i = 0; i < kPoints; ++i)
     if (inHole(i)) E[i] = 0.0;
   REQUIRE(s.setFloat64(PERISTEP_VR_MATERIAL_YOUNGS_MODULUS, E) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_X0, {kNotch[0]}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_Y0, {kNotch[1]}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_X1, {kNotch[2]}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_Y1, {kNotch[3]}) == fmi3OK);
+  setNotch(s);
   REQUIRE(s.setFloat64(PERISTEP_VR_GRIP_TOP_UY, {0.0}) == fmi3OK);  // read by the quasi-static model only
   REQUIRE(s.setFloat64(PERISTEP_VR_GRIP_TOP_VY, {kPull}) == fmi3OK);
 }

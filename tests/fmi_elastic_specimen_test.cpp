@@ -11,7 +11,7 @@
 
 #include "fmi_abi_support.hpp"
 #include "fmi_refusal.hpp"
-#include "notched_plate.hpp"
+#include "fmi_notched_plate.hpp"
 
 namespace {
 
@@ -186,10 +186,7 @@ TEST_CASE("an elastic notched plate with an inclusion and a hole solves as the f
     REQUIRE(s.setFloat64(PERISTEP_VR_LY, {kLy}) == fmi3OK);
     REQUIRE(s.setFloat64(PERISTEP_VR_MATERIAL_YOUNGS_MODULUS, E) == fmi3OK);
     REQUIRE(s.setFloat64(PERISTEP_VR_MATERIAL_FRACTURE_ENERGY, fractureEnergy(true)) == fmi3OK);
-    REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_X0, {kNotch[0]}) == fmi3OK);
-    REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_Y0, {kNotch[1]}) == fmi3OK);
-    REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_X1, {kNotch[2]}) == fmi3OK);
-    REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_Y1, {kNotch[3]}) == fmi3OK);
+    setNotch(s);
     REQUIRE(s.setFloat64(PERISTEP_VR_GRIP_TOP_UY, {kTopPull}) == fmi3OK);
     REQUIRE(s.initialize() == fmi3OK);
     REQUIRE(s.setFloat64(PERISTEP_VR_LOAD_FACTOR, {3.5}) == fmi3OK);  // below the first break (fmi_specimen_test)

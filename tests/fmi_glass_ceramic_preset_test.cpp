@@ -27,9 +27,7 @@ void common(Session& s, std::int64_t scene, bool pca) {
 // The preset spelled out: bottom and top held and moved by -1 and +1 m per unit load in y, left and right
 // free (the start values), the pre-crack from 2 delta beyond the left edge to its tip.
 void asSpecimen(Session& s, bool pca) {
-  REQUIRE(s.fmu.fmi3EnterConfigurationMode(s.instance) == fmi3OK);
-  REQUIRE(s.setUInt64(PERISTEP_VR_NCRACKS, 1) == fmi3OK);
-  REQUIRE(s.fmu.fmi3ExitConfigurationMode(s.instance) == fmi3OK);
+  REQUIRE(s.configureStructural({PERISTEP_VR_NCRACKS}, {1}) == fmi3OK);
   common(s, PERISTEP_SCENE_SPECIMEN, pca);
   REQUIRE(s.setInt64(PERISTEP_VR_MATERIAL_FIELD, PERISTEP_MATERIAL_GLASS_CERAMIC) == fmi3OK);
   const double h = kLx / (kNx - 1), left = -0.5 * kLx;

@@ -8,18 +8,14 @@
 
 #include "fmi_abi_support.hpp"
 #include "fmi_refusal.hpp"
-#include "notched_plate.hpp"
+#include "fmi_notched_plate.hpp"
 
 using namespace notched_plate;
 
 namespace {
 
 void configure(Session& s, std::uint64_t nx, std::uint64_t ny) {
-  const fmi3ValueReference vr[] = {PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NCRACKS};
-  const fmi3UInt64 v[] = {nx, ny, 1};
-  REQUIRE(s.fmu.fmi3EnterConfigurationMode(s.instance) == fmi3OK);
-  REQUIRE(s.fmu.fmi3SetUInt64(s.instance, vr, 3, v, 3) == fmi3OK);
-  REQUIRE(s.fmu.fmi3ExitConfigurationMode(s.instance) == fmi3OK);
+  REQUIRE(s.configureStructural({PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NCRACKS}, {nx, ny, 1}) == fmi3OK);
 }
 
 // Grips by their start values but the top's displacement.
@@ -30,10 +26,7 @@ void setUpNotchedPlate(Session& s, bool inclusion) {
   REQUIRE(s.setFloat64(PERISTEP_VR_LY, {kLy}) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_MATERIAL_YOUNGS_MODULUS, youngsModulus(inclusion)) == fmi3OK);
   REQUIRE(s.setFloat64(PERISTEP_VR_MATERIAL_FRACTURE_ENERGY, fractureEnergy(inclusion)) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_X0, {kNotch[0]}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_Y0, {kNotch[1]}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_X1, {kNotch[2]}) == fmi3OK);
-  REQUIRE(s.setFloat64(PERISTEP_VR_CRACK_Y1, {kNotch[3]}) == fmi3OK);
+  setNotch(s);
   REQUIRE(s.setFloat64(PERISTEP_VR_GRIP_TOP_UY, {kTopPull}) == fmi3OK);
 }
 
@@ -123,11 +116,7 @@ TEST_CASE("a specimen's modulus map carries the KL random field of xi", "[abi][s
   const auto modulus = [](std::vector<double> xi) {
     Session s;
     setUpNotchedPlate(s, true);
-    const fmi3ValueReference vr[] = {PERISTEP_VR_NX, PERISTEP_VR_NY, PERISTEP_VR_NMODES};
-    const fmi3UInt64 v[] = {kNx, kNy, 2};
-    REQUIRE(s.fmu.fmi3EnterConfigurationMode(s.instance) == fmi3OK);
-    REQUIRE(s.fmu.fmi3SetUInt64(s.instance, vr, 3, v, 3) == fmi3OK);
-    REQUIRE(s.fmu.fmi3ExitConfigurationMode(s.instance) == fmi3OK);
+    REQUIRE(s.configure(kNx, kNy, 2) == fmi3OK);
     REQUIRE(s.setInt64(PERISTEP_VR_MATERIAL_FIELD, PERISTEP_MATERIAL_KL_FIELD) == fmi3OK);
     REQUIRE(s.setFloat64(PERISTEP_VR_XI, xi) == fmi3OK);
     REQUIRE(s.initialize() == fmi3OK);

@@ -15,7 +15,7 @@ import sys
 
 import numpy as np
 
-from embed import PeriStep, TOKEN, get_float64, log_message, refs, set_float64
+from embed import PeriStep, get_float64, refs, set_float64
 
 # Value references and enumeration values, from api/peristep.h.
 VR_NX, VR_NY, VR_SCENE, VR_LX, VR_LY, VR_POISSON_RATIO, VR_SEED, VR_CRYSTAL_FRACTION = 1, 2, 10, 11, 12, 14, 17, 24
@@ -34,12 +34,7 @@ def plane_strain_m(E, nu=NU):
 
 
 def effective_m(fmu, f):
-    instance = fmu.InstantiateCoSimulation(b"effective_modulus.py", TOKEN, None, False, True, False, False, None, 0,
-                                           None, log_message, None)
-    if not instance:
-        raise RuntimeError("instantiation failed")
-    flags = [C.c_bool() for _ in range(3)]
-    last_time = C.c_double()
+    instance = fmu.instantiate(b"effective_modulus.py")
     try:
         fmu.EnterConfigurationMode(instance)
         fmu.SetUInt64(instance, refs(VR_NX, VR_NY), 2, (C.c_uint64 * 2)(N, N), 2)
@@ -55,7 +50,7 @@ def effective_m(fmu, f):
         set_float64(fmu, instance, VR_COLLAR_DUY_DY, [EPS])
         fmu.EnterInitializationMode(instance, False, 0.0, 0.0, True, 1.0)
         fmu.ExitInitializationMode(instance)
-        fmu.DoStep(instance, 0.0, 1.0, True, *[C.byref(flag) for flag in flags], C.byref(last_time))
+        fmu.step(instance, 0.0, 1.0)
         reaction = get_float64(fmu, instance, VR_REACTION_TOP_Y, (1,))[0]
         fmu.Terminate(instance)
     finally:
@@ -65,8 +60,6 @@ def effective_m(fmu, f):
 
 def main(path):
     fmu = PeriStep(path)
-    fmu._declare("fmi3SetInt64", C.c_int, [C.c_void_p, C.POINTER(C.c_uint32), C.c_size_t,
-                                           C.POINTER(C.c_int64), C.c_size_t])
     mg, mc = plane_strain_m(GLASS_E), plane_strain_m(CRYSTAL_E)
     print(f"{'f':>4} {'M effective GPa':>16} {'Reuss':>8} {'Voigt':>8} {'M calibrated':>13}")
     moduli = []

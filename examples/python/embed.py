@@ -42,11 +42,26 @@ class PeriStep:
         self._declare("fmi3EnterInitializationMode", C.c_int,
                       [C.c_void_p, C.c_bool, C.c_double, C.c_double, C.c_bool, C.c_double])
         self._declare("fmi3SetUInt64", C.c_int, [C.c_void_p, vr_array, size, C.POINTER(C.c_uint64), size])
+        self._declare("fmi3SetInt64", C.c_int, [C.c_void_p, vr_array, size, C.POINTER(C.c_int64), size])
         self._declare("fmi3SetFloat64", C.c_int, [C.c_void_p, vr_array, size, C.POINTER(C.c_double), size])
         self._declare("fmi3GetFloat64", C.c_int, [C.c_void_p, vr_array, size, C.POINTER(C.c_double), size])
         self._declare("fmi3DoStep", C.c_int,
                       [C.c_void_p, C.c_double, C.c_double, C.c_bool, C.POINTER(C.c_bool), C.POINTER(C.c_bool),
                        C.POINTER(C.c_bool), C.POINTER(C.c_double)])
+
+    def instantiate(self, name):
+        """A co-simulation instance that logs to stderr; name is the instance's name (bytes)."""
+        instance = self.InstantiateCoSimulation(name, TOKEN, None, False, True, False, False, None, 0, None,
+                                                log_message, None)
+        if not instance:
+            raise RuntimeError("instantiation failed")
+        return instance
+
+    def step(self, instance, time, step_size):
+        """fmi3DoStep from `time` over `step_size`; the event flags and the last time are not needed here."""
+        flags = [C.c_bool() for _ in range(3)]
+        last_time = C.c_double()
+        self.DoStep(instance, time, step_size, True, *[C.byref(f) for f in flags], C.byref(last_time))
 
     def _declare(self, name, restype, argtypes):
         f = getattr(self.lib, name)
@@ -81,13 +96,7 @@ def get_float64(fmu, instance, vr, shape):
 def main(path):
     fmu = PeriStep(path)
     # 2. One instance serves every sample: fmi3Reset brings it back to its start values.
-    instance = fmu.InstantiateCoSimulation(b"embed.py", TOKEN, None, False, True, False, False, None, 0, None,
-                                           log_message, None)
-    if not instance:
-        raise RuntimeError("instantiation failed")
-
-    flags = [C.c_bool() for _ in range(3)]
-    last_time = C.c_double()
+    instance = fmu.instantiate(b"embed.py")
     print(f"{'xi':>6} {'errorL2 [m]':>12} {'max |ux| [m]':>13} {'max damage':>11}")
     try:
         for k, xi in enumerate([-2.0, -1.0, 0.0, 1.0, 2.0]):
@@ -104,7 +113,7 @@ def main(path):
             fmu.EnterInitializationMode(instance, False, 0.0, 0.0, True, 1.0)
             fmu.ExitInitializationMode(instance)
             set_float64(fmu, instance, VR_LOAD_FACTOR, [1.0])
-            fmu.DoStep(instance, 0.0, 1.0, True, *[C.byref(f) for f in flags], C.byref(last_time))
+            fmu.step(instance, 0.0, 1.0)
             # 6. Fields as 2D arrays: row j is y_j, column i is x_i.
             ux = get_float64(fmu, instance, VR_UX, (NY, NX))
             damage = get_float64(fmu, instance, VR_DAMAGE, (NY, NX))

@@ -12,7 +12,7 @@ import sys
 
 import numpy as np
 
-from embed import PeriStep, TOKEN, get_float64, log_message, refs, set_float64
+from embed import PeriStep, get_float64, refs, set_float64
 
 # Value references and enumeration values, from api/peristep.h.
 VR_NX, VR_NY, VR_NCRACKS, VR_SCENE, VR_LX, VR_LY = 1, 2, 4, 10, 11, 12
@@ -56,16 +56,9 @@ def material_maps(picture):
 
 def main(path):
     fmu = PeriStep(path)
-    fmu._declare("fmi3SetInt64", C.c_int, [C.c_void_p, C.POINTER(C.c_uint32), C.c_size_t,
-                                           C.POINTER(C.c_int64), C.c_size_t])
     E, G = material_maps(PICTURE)
     ny, nx = E.shape
-    instance = fmu.InstantiateCoSimulation(b"specimen.py", TOKEN, None, False, True, False, False, None, 0, None,
-                                           log_message, None)
-    if not instance:
-        raise RuntimeError("instantiation failed")
-    flags = [C.c_bool() for _ in range(3)]
-    last_time = C.c_double()
+    instance = fmu.instantiate(b"specimen.py")
     try:
         # 1. The grid and the number of pre-cracks are structural parameters.
         fmu.EnterConfigurationMode(instance)
@@ -85,7 +78,7 @@ def main(path):
         # 3. Raise the load step by step: each step breaks bonds until equilibrium.
         for step, load in enumerate(np.arange(2.0, 12.01, 0.5)):
             set_float64(fmu, instance, VR_LOAD_FACTOR, [load])
-            fmu.DoStep(instance, float(step), 1.0, True, *[C.byref(f) for f in flags], C.byref(last_time))
+            fmu.step(instance, float(step), 1.0)
             damage = get_float64(fmu, instance, VR_DAMAGE, (ny, nx))
             reaction = get_float64(fmu, instance, VR_REACTION_TOP_Y, (1,))[0]
             cracked = damage > 0.3
