@@ -238,11 +238,11 @@ int main(int argc, char** argv) try {
   }
   std::printf("profile: %d load steps, %d solves, %d factorizations %.1f s, %d GMRES iterations, %d dense zone LUs, "
               "%lld substitutions, solves %.1f s, assembly %.1f s, bond checks %.1f s; "
-              "last zone factors %lld entries; fallbacks to double factors %d\n",
+              "last zone factors %lld entries; GMRES rescues %d; fallbacks to double factors %d\n",
               run.step - 1, sum.subIterations, sum.factorizations, sum.factorizationSeconds, sum.krylovIterations,
               sum.denseFactorizations, static_cast<long long>(sum.substitutions), sum.solveSeconds,
               sum.assemblySeconds, sum.bondCheckSeconds, static_cast<long long>(g.solver().zoneFactorEntries()),
-              sum.precisionFallbacks);
+              sum.krylovRescues, sum.precisionFallbacks);
   std::printf("factorization ratio: wall %.1f s / one factorization %.2f s = %.1f\n", elapsed(), factorizationSeconds,
               elapsed() / factorizationSeconds);
   std::uint64_t history = run.history;

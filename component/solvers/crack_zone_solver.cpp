@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/errors.hpp"
 #include "solvers/metis_ordering.hpp"
@@ -24,7 +25,11 @@ double backwardError(const CsrMatrix& A, std::span<const double> b, std::span<co
     const auto row = static_cast<std::size_t>(i);
     r[row] = b[row] - ax;
     scale += std::abs(b[row]);
-    if (scale > 0) worst = std::max(worst, std::abs(r[row]) / scale);
+    // A non-finite entry of x (single-precision factors can overflow) must not pass: NaN loses every max.
+    if (!std::isfinite(r[row]) || !std::isfinite(scale))
+      worst = std::numeric_limits<double>::infinity();
+    else if (scale > 0)
+      worst = std::max(worst, std::abs(r[row]) / scale);
   }
   return worst;
 }

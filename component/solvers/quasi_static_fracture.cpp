@@ -24,6 +24,8 @@ constexpr int kMaxSubIterations = 100000;
 // 1e-13 gives the same history (bench/README.md) for about 10% more iterations.
 constexpr double kKrylovTolerance = 1e-13;
 constexpr int kKrylovRestart = 40;
+// GMRES iterations allowed where refinement with single-precision zone factors diverged.
+constexpr int kRescueIterations = 200;
 // The crack zone: points whose bonds reach this fraction of their critical stretch, the closest first,
 // up to this many unknowns in the dense Schur complement (bench/README.md, "Issue 14").
 constexpr double kZoneRatio = 0.1;
@@ -288,10 +290,13 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
   bool solved = !outsideZone_;
   if (outsideZone_) {
     // Rows outside the core changed (the crack left the zone, or bonds broke elsewhere): GMRES with the
-    // zone solver while that is cheaper than a new zone.
+    // zone solver while that is cheaper than a new zone. Single-precision factors of a nearly singular
+    // matrix can overflow there: the next zone then starts from the last finite solution.
+    const std::vector<double> before = x_;
     solved = iterateWithinBudget(report, [&](int budget) {
       return zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, budget, kKrylovRestart);
     });
+    if (!solved && !std::all_of(x_.begin(), x_.end(), [](double v) { return std::isfinite(v); })) x_ = before;
   }
   report.solveSeconds += clock.lap();
   if (!solved) factorizeZone(report);
@@ -305,14 +310,25 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
 
 void QuasiStaticFracture::solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report) {
   // Single-precision factors refined in double diverge once the matrix is too ill-conditioned (a fragment
-  // held only by the springs; h = 8 um, f = 0.4, seed 87 at U_D = 0.828 um): the zone is factorized in
-  // double precision from then on. A double-precision solve that stops short of tol stands as before.
+  // held only by the springs; h = 8 um, f = 0.4, seed 87 at U_D = 0.828 um). GMRES preconditioned by the
+  // same factors is tried first (refinement by GMRES: it converges where plain refinement does not, and
+  // keeps single-precision factors, whose double counterparts set the run's peak memory at h = 2 um);
+  // failing that, the zone is factorized in double precision from then on. A double-precision solve that
+  // stops short of tol stands as before.
   if (zone_->precision() != FactorPrecision::Single) {
     zone_->solve(system_.A, rhs, x_, kKrylovTolerance);
     return;
   }
   const std::vector<double> start = x_;  // where a fall-back starts again
   if (zone_->solve(system_.A, rhs, x_, kKrylovTolerance)) return;
+  x_ = start;
+  const GmresResult rescue =
+      zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, kRescueIterations, kKrylovRestart);
+  report.krylovIterations += rescue.iterations;
+  if (rescue.converged) {
+    ++report.krylovRescues;
+    return;
+  }
   zone_->setPrecision(FactorPrecision::Double);
   ++report.precisionFallbacks;
   factorizeZone(report);

@@ -27,6 +27,7 @@ struct LoadStepReport {
   int denseFactorizations = 0; // dense LU factorizations of the crack zone's Schur complement
   std::int64_t substitutions = 0;  // solves with the crack zone's factors (refinement and GMRES included)
   int precisionFallbacks = 0;  // single-precision zone factors that did not converge: double from then on
+  int krylovRescues = 0;       // zone solves whose refinement diverged and GMRES with the same factors finished
   std::size_t newlyBroken = 0; // pairs broken at this load
   // Wall time of the phases (profiling only: no decision depends on them, so runs stay reproducible).
   double assemblySeconds = 0, factorizationSeconds = 0, solveSeconds = 0, bondCheckSeconds = 0;
@@ -38,6 +39,7 @@ struct LoadStepReport {
     denseFactorizations += o.denseFactorizations;
     substitutions += o.substitutions;
     precisionFallbacks += o.precisionFallbacks;
+    krylovRescues += o.krylovRescues;
     newlyBroken += o.newlyBroken;
     assemblySeconds += o.assemblySeconds;
     factorizationSeconds += o.factorizationSeconds;
