@@ -254,7 +254,9 @@ GmresResult CrackZoneSolver::solveIterative(const CsrMatrix& A, std::span<const 
   };
   const auto precondition = [&](std::span<const double> in, std::span<double> out) { solveScaled(in, out); };
   const GmresResult result = gmres(apply, precondition, bs, y, tol, maxIterations, restart);
-  for (std::size_t i = 0; i < n; ++i) x[i] = scale_[i] * y[i];
+  // Single-precision factors of a nearly singular matrix can overflow: x then keeps the last finite solution.
+  if (std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); }))
+    for (std::size_t i = 0; i < n; ++i) x[i] = scale_[i] * y[i];
   return result;
 }
 

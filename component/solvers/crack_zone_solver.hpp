@@ -52,7 +52,8 @@ class CrackZoneSolver {
                     std::span<const std::size_t> correctionBlocks, const CsrMatrix& A);
 
   // A x = b when rows outside the core changed too: GMRES on the scaled system D A D, preconditioned by
-  // the zone solver (exact up to those rows), from x; stops at relative residual tol.
+  // the zone solver (exact up to those rows), from x; stops at relative residual tol. x is left as it was
+  // when the iteration became non-finite.
   GmresResult solveIterative(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol,
                              int maxIterations, int restart);
 

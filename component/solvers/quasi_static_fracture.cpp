@@ -290,13 +290,10 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
   bool solved = !outsideZone_;
   if (outsideZone_) {
     // Rows outside the core changed (the crack left the zone, or bonds broke elsewhere): GMRES with the
-    // zone solver while that is cheaper than a new zone. Single-precision factors of a nearly singular
-    // matrix can overflow there: the next zone then starts from the last finite solution.
-    const std::vector<double> before = x_;
+    // zone solver while that is cheaper than a new zone.
     solved = iterateWithinBudget(report, [&](int budget) {
       return zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, budget, kKrylovRestart);
     });
-    if (!solved && !std::all_of(x_.begin(), x_.end(), [](double v) { return std::isfinite(v); })) x_ = before;
   }
   report.solveSeconds += clock.lap();
   if (!solved) factorizeZone(report);
