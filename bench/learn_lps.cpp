@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   std::size_t firstFrame = 5, lastFrame = 20;
   double margin = 1.0;
   std::size_t scanStride = 8;
-  bool increments = false;
+  bool increments = false, matchedHorizon = false;
   std::string s0Set = "fracture_train";
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--deltas", deltas, "horizons [A]")->delimiter(',');
@@ -49,6 +49,8 @@ int main(int argc, char** argv) {
   app.add_option("--scan-stride", scanStride, "print every n-th point of the s0 scan");
   app.add_option("--s0-set", s0Set, "fracture sample of the s0 step (003: fracture_train; fracture_test: IV)");
   app.add_flag("--increments", increments, "s0 step on u - u(frame 0): frame 0 as the unstressed reference state");
+  app.add_flag("--matched-horizon", matchedHorizon,
+               "s0 step with the horizon at the training lattice's delta/h (the training stencil's bonds)");
   app.add_option("--margin", margin, "residual points lie this many delta inside the sheet (003: 2)");
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
   try {
@@ -115,10 +117,11 @@ int main(int argc, char** argv) {
     if (increments)
       for (std::size_t f = frames.u.size(); f-- > 0;)
         for (std::size_t k = 0; k < frames.u[f].size(); ++k) frames.u[f][k] -= frames.u[0][k];
-    const LatticeStencil fst = makeLatticeStencil(frac.grid.hx, frac.grid.hy, best.delta);
-    const DamagedLpsOperator op(frac.grid, fst, f.kernel, f.lambda, f.mu);
+    const double fdelta = matchedHorizon ? best.delta * frac.grid.hx / train.lattice.hx : best.delta;
+    const LatticeStencil fst = makeLatticeStencil(frac.grid.hx, frac.grid.hy, fdelta);
+    const DamagedLpsOperator op(frac.grid, fst, BernsteinKernel{fdelta, f.kernel.alpha, f.kernel.D}, f.lambda, f.mu);
     // The MD slit (x1 = 0, x2 from -50 to -25 A) is broken from the start.
-    const FractureResidual fres(frames, op, firstFrame, lastFrame, margin * best.delta, op.slit(0, -60, 0, -25));
+    const FractureResidual fres(frames, op, firstFrame, lastFrame, margin * fdelta, op.slit(0, -60, 0, -25));
     double smax = 0;  // largest finite stretch
     for (const double s : fres.maxStretch(lastFrame))
       if (std::isfinite(s)) smax = std::max(smax, s);

@@ -3,25 +3,32 @@
 // frame 0 and is compared with the MD frames: relative displacement and damage errors over 40 frames.
 //   learn_predict [--data data/learning/graphene_md.h5] [--s0 0.11] [--substeps 8] [--layer 1]
 //                 [--scan 0.05,0.08,0.11,0.15,0.2] [--increments] [--diagnose] [--per-frame]
-//                 [--no-free-surface]
+//                 [--no-free-surface] [--matched-horizon]
 // Samples: III (training, h = 5 A; vertical edges prescribed), IV (test, h = 5 A; free edges, body force),
 // III on h = 3.17 A with delta = 4 h and s0 sqrt(5/3.17) (003 Sec. 5.4).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "bench_cli.hpp"
 #include "learning/data_sets.hpp"
 #include "learning/fracture_prediction.hpp"
 #include "learning/kernel_fit.hpp"
+#include "learning/lps_symbol.hpp"
 #include "learning/md_fracture_samples.hpp"
 
 using namespace peristep::learning;
 
 namespace {
+
+constexpr double kNoDamage = 1e3;  // s0: only the slit's bonds (stretch +infinity) are broken
 
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -68,7 +75,6 @@ constexpr double kHalfSide = 50.0;  // the MD sheet is [-50, 50]^2 A, the slit x
 void diagnose(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& s, const KernelFit& fit,
               double delta) {
   const CoarseGrid& g = op.grid();
-  constexpr double kNoDamage = 1e3;  // s0: only the slit's bonds (stretch +infinity) are broken
   double n = 0, sx = 0, sxx = 0, sxu = 0, su = 0, sy = 0, syy = 0, syv = 0, sv = 0;
   for (std::size_t p = 0; p < g.size(); ++p) {
     if (s.prescribed[p] || std::abs(g.x(p)) < 12) continue;
@@ -113,20 +119,64 @@ void diagnose(const DamagedLpsOperator& op, const FractureFrames& data, const Pr
   }
 }
 
+// Is the learned operator on this stencil still the elastic operator it was fitted as? Its Fourier symbol at
+// long waves (1000 A; Navier: S11/k^2 = lambda + 2 mu, S22/k^2 = mu along x1) and its smallest eigenvalue over
+// the wave vectors of a 200 x 200 periodic lattice of the same spacing (negative: a mode grows).
+void describeStencil(const char* what, const LatticeStencil& st, const BernsteinKernel& kernel, double lambda,
+                     double mu) {
+  const double k = 2 * M_PI / 1000;
+  const Symbol S = lpsSymbol(st, kernel, lambda, mu, k, 0.0);
+  const Solvability sv = checkSolvability(PeriodicLattice{200, 200, st.hx, st.hy}, st, kernel, lambda, mu);
+  std::printf("    stencil %-22s h = %.3f x %.3f A, delta = %.3f A, %zu bonds: long waves along x1 S11/k^2 %.3f "
+              "(lambda + 2 mu %.3f), S22/k^2 %.3f (mu %.3f) eV/A^3; smallest symbol eigenvalue %.2e (%s)\n",
+              what, st.hx, st.hy, st.delta, st.size(), S[0] / (k * k), lambda + 2 * mu, S[2] / (k * k), mu,
+              sv.minEigen, sv.minEigen > 0 ? "positive" : "NOT positive");
+}
+
+// Growth of the prediction's linear modes on the bounded sample, bond states fixed (intact, or the slit broken):
+// rho u'' = -L u over the free points, modes e^{s t} with s^2 = -(eigenvalue of rho^-1 L); printed per frame.
+void modeGrowth(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& s, bool slit) {
+  const CoarseGrid& g = op.grid();
+  std::vector<std::size_t> free;
+  for (std::size_t p = 0; p < g.size(); ++p)
+    if (!s.prescribed[p]) free.push_back(2 * p), free.push_back(2 * p + 1);
+  const std::size_t n = free.size();
+  std::vector<double> smax = slit ? s.initialStretch : std::vector<double>{}, u(2 * g.size(), 0.0);
+  op.updateMaxStretch(u, smax);
+  Eigen::MatrixXd A(n, n);
+  for (std::size_t j = 0; j < n; ++j) {
+    u.assign(u.size(), 0.0);
+    u[free[j]] = 1.0;
+    const std::vector<double> L = op.apply(u, smax, kNoDamage);
+    for (std::size_t i = 0; i < n; ++i) A(i, j) = L[free[i]] / data.rho[free[i] / 2];
+  }
+  const Eigen::VectorXcd e = Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues();
+  double fastest = 0;
+  std::size_t growing = 0;
+  for (const std::complex<double> l : e) {
+    const double perFrame = std::sqrt(-l).real() * data.interval;
+    fastest = std::max(fastest, perFrame);
+    if (perFrame > 1e-3) ++growing;
+  }
+  std::printf("    linear modes, %-8s %zu of %zu grow faster than e^0.001 per frame; the fastest by e^%.3f per frame "
+              "(x %.3g over 40 frames)\n", slit ? "slit:" : "intact:", growing, n, fastest, std::exp(40 * fastest));
+}
+
 // increments: the frames minus frame 0, i.e. frame 0 taken as the unstressed reference state (sample III
 // is pre-stretched by 10% in MD, a state 003's sample is not in and the learned linear model is not made for).
 Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const KernelFit& fit, double s0,
-                std::size_t substeps, double layer, bool increments, bool freeSurface, bool diagnostics = false) {
+                std::size_t substeps, double layer, bool increments, bool freeSurface, double horizon,
+                bool diagnostics = false) {
   const auto t0 = std::chrono::steady_clock::now();
   FractureFrames data = fractureFrames(set);
   if (increments)
     for (std::size_t f = data.u.size(); f-- > 0;)
       for (std::size_t k = 0; k < data.u[f].size(); ++k) data.u[f][k] -= data.u[0][k];
   const PredictionCase pc =
-      predictionCase(set.grid, smp, {fit.kernel, fit.lambda, fit.mu}, s0, substeps, layer, freeSurface);
+      predictionCase(set.grid, smp, {fit.kernel, fit.lambda, fit.mu}, s0, substeps, layer, freeSurface, horizon);
   const DamagedLpsOperator& op = pc.op;
   const PredictionSetup& s = pc.setup;
-  const double delta = smp.deltaPerH > 0 ? smp.deltaPerH * set.grid.hx : fit.kernel.delta;
+  const double delta = horizon > 0 ? horizon : smp.deltaPerH > 0 ? smp.deltaPerH * set.grid.hx : fit.kernel.delta;
   Outcome out;
   out.s0 = s.s0;
   out.points = set.grid.size();
@@ -134,6 +184,12 @@ Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const Ker
   balance(op, data, s, out);
   for (const double v : data.u[s.lastFrame]) out.rmsLast += v * v;
   out.rmsLast = std::sqrt(out.rmsLast / static_cast<double>(set.grid.size()));
+  if (diagnostics) {
+    const BernsteinKernel kernel{delta, fit.kernel.alpha, fit.kernel.D};
+    describeStencil("of this grid:", makeLatticeStencil(set.grid.hx, set.grid.hy, delta), kernel, fit.lambda, fit.mu);
+    modeGrowth(op, data, s, false);
+    modeGrowth(op, data, s, true);
+  }
   if (diagnostics && smp.edgesDriven) diagnose(op, data, s, fit, delta);
   const FractureRun run = predictFracture(op, data, s);
   out.finite = run.finite;
@@ -151,7 +207,7 @@ int main(int argc, char** argv) {
   int order = 4;
   std::size_t substeps = 8;
   std::vector<double> scan;
-  bool increments = false, diagnostics = false, perFrame = false, noFreeSurface = false;
+  bool increments = false, diagnostics = false, perFrame = false, noFreeSurface = false, matchedHorizon = false;
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--delta", delta, "horizon of the learned kernel [A] (learn_lps's choice: 20)");
   app.add_option("--order", order, "Bernstein order P (learn_lps's choice: 4)");
@@ -161,7 +217,10 @@ int main(int argc, char** argv) {
   app.add_flag("--increments", increments, "predict u - u(frame 0): frame 0 as the unstressed reference state");
   app.add_flag("--no-free-surface", noFreeSurface, "without the free-surface sums of 003:(30), for comparison");
   app.add_flag("--per-frame", perFrame, "also the displacement error of every 5th frame");
-  app.add_flag("--diagnose", diagnostics, "sample III: is frame 0 an equilibrium of the learned model?");
+  app.add_flag("--diagnose", diagnostics,
+               "is the model on each grid's stencil stable, and (III) is frame 0 an equilibrium of it?");
+  app.add_flag("--matched-horizon", matchedHorizon,
+               "each sample's horizon at the training lattice's delta/h (its stencil then has the training stencil's bonds)");
   app.add_option("--scan", scan, "also: errors on sample III for these s0")->delimiter(',');
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
   try {
@@ -176,11 +235,20 @@ int main(int argc, char** argv) {
                 delta, order, fit.kernel.alpha, fit.lambda * kTPaPerEvA3, fit.mu * kTPaPerEvA3, fit.relativeResidual,
                 seconds(t0));
     for (const double d : fit.kernel.D) std::printf(" %.5e", d);
+    std::printf("\n");
+    describeStencil("of the training lattice:", makeLatticeStencil(train.lattice.hx, train.lattice.hy, delta), fit.kernel,
+                    fit.lambda, fit.mu);
     const double interval = file.sets.at("fracture_train").frameInterval;
-    std::printf("\nframe interval %.3e s, %zu steps per frame: dt = %.3e s; s0 = %.4f (at h = 5 A), eta = 0.05, "
-                "edge layers of III %.2f delta%s\n\n",
+    std::printf("frame interval %.3e s, %zu steps per frame: dt = %.3e s; s0 = %.4f (at h = 5 A), eta = 0.05, "
+                "edge layers of III %.2f delta%s%s\n\n",
                 interval, substeps, interval / static_cast<double>(substeps), s0, layer,
-                increments ? "; displacements from frame 0 (--increments)" : "");
+                increments ? "; displacements from frame 0 (--increments)" : "",
+                matchedHorizon ? "; horizon delta h / h_train (--matched-horizon)" : "");
+    const auto run = [&](const MdFractureSample& smp, double s0Run, bool diagnose) {
+      const CoarseDataSet& set = file.sets.at(smp.set);
+      const double horizon = matchedHorizon ? delta * set.grid.hx / train.lattice.hx : 0.0;
+      return predict(set, smp, fit, s0Run, substeps, layer, increments, !noFreeSurface, horizon, diagnose);
+    };
     const auto& samples = kMdFractureSamples;
     std::printf("u, phi err: sqrt(sum_f |pred - MD|^2 / sum_f |MD|^2), frames 1-40; mean: of the per-frame ratios; "
                 "u shift: u err without the mean of pred - MD per frame;\nphi 40: mean damage at frame 40, predicted / "
@@ -206,24 +274,18 @@ int main(int argc, char** argv) {
       }
       std::fflush(stdout);
     };
-    for (const MdFractureSample& smp : samples)
-      row(smp.name, predict(file.sets.at(smp.set), smp, fit, s0, substeps, layer, increments, !noFreeSurface,
-                  diagnostics),
-          smp.paper);
+    for (const MdFractureSample& smp : samples) row(smp.name, run(smp, s0, diagnostics), smp.paper);
     if (!scan.empty()) {
       std::printf("\ns0 scan on sample III (h = 5 A); the data's damage uses the same s0, so only the "
                   "displacement error compares across s0:\n");
       double best = NAN, bestError = INFINITY;
       for (const double s : scan) {
-        const Outcome o = predict(file.sets.at(samples[0].set), samples[0], fit, s, substeps, layer, increments,
-                                  !noFreeSurface);
+        const Outcome o = run(samples[0], s, false);
         row(samples[0].name, o, samples[0].paper);
         if (o.finite && o.error.displacement < bestError) best = s, bestError = o.error.displacement;
       }
       std::printf("\nwith the s0 of the smallest displacement error on III, %.4f:\n", best);
-      for (const MdFractureSample& smp : samples)
-        row(smp.name, predict(file.sets.at(smp.set), smp, fit, best, substeps, layer, increments, !noFreeSurface),
-            smp.paper);
+      for (const MdFractureSample& smp : samples) row(smp.name, run(smp, best, false), smp.paper);
     }
     std::printf("\ntotal %.1f s\n", seconds(t0));
   } catch (const std::exception& e) {

@@ -18,8 +18,8 @@ constexpr char kMagic[] = "PeriStep MD fracture samples 1";
 }  // namespace
 
 PredictionCase predictionCase(const CoarseGrid& grid, const MdFractureSample& sample, const LearnedModel& model,
-                              double s0AtH5, std::size_t substeps, double layer, bool freeSurface) {
-  const double delta = sample.deltaPerH > 0 ? sample.deltaPerH * grid.hx : model.kernel.delta;
+                              double s0AtH5, std::size_t substeps, double layer, bool freeSurface, double horizon) {
+  const double delta = horizon > 0 ? horizon : sample.deltaPerH > 0 ? sample.deltaPerH * grid.hx : model.kernel.delta;
   const BernsteinKernel kernel{delta, model.kernel.alpha, model.kernel.D};  // K/m only: the scale does not matter
   PredictionCase c{DamagedLpsOperator(grid, makeLatticeStencil(grid.hx, grid.hy, delta), kernel, model.lambda, model.mu),
                    {}};

@@ -36,13 +36,15 @@ struct LearnedModel {
 };
 
 // One sample's prediction: the operator on the sample's grid and 003's set-up (the slit's bonds broken, the
-// edge layers `layer` horizons wide following the frames for III, s0 = s0AtH5 * s0Scale).
+// edge layers `layer` horizons wide following the frames for III, s0 = s0AtH5 * s0Scale). horizon > 0
+// replaces the sample's horizon rule (bench/learn_predict --matched-horizon).
 struct PredictionCase {
   DamagedLpsOperator op;
   PredictionSetup setup;
 };
 PredictionCase predictionCase(const CoarseGrid& grid, const MdFractureSample& sample, const LearnedModel& model,
-                              double s0AtH5, std::size_t substeps, double layer = 1.0, bool freeSurface = true);
+                              double s0AtH5, std::size_t substeps, double layer = 1.0, bool freeSurface = true,
+                              double horizon = 0);
 
 // The model and, per sample of kMdFractureSamples in order, its frames 0..40 and the frame interval [s].
 struct MdFractureData {

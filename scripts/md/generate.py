@@ -13,8 +13,8 @@ present is not repeated. Data sets (003 Sec. 5; choices not given in 003 are mar
   fracture_train (III): [-50, 50]^2 A, 25 A slit at x1 = 0 from the lower edge; CHOSEN: the sheet is first
               stretched by eps0 = 10% in x1 and relaxed with the vertical edges (|x1| > 47 A) held, then the edges
               move at +-v(x2) = +-v0 (50 - x2)/100, v0 = 2 A/ps, the interior started on the matching linear
-              profile (crack starts near frame 10 and grows to frame 40). Without the stretch, edge speeds that
-              start a crack within 40 frames (v0 = 20 A/ps) strain the whole sheet by tens of percent.
+              profile (crack starts near frame 10 and grows to frame 40). --eps0 0 --v0 V runs 003's loading
+              without the stretch: the crack starts at frame 9, 7, 6, 5, 4 for V = 20, 30, 40, 50, 60 A/ps.
   fracture_test (IV): same sheet, free edges, body-force pulse of 003 Sec. 5 (IV); CHOSEN: b0 = 0.8 eV/A,
               tr = 0.5 ps (crack starts near frame 9 and grows to frame 40; b0 = 2 fragments the sheet).
 """
@@ -112,6 +112,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--train", type=int, default=70, help="number of training samples (<= 70)")
     ap.add_argument("--out", default=os.path.join(REPO, "data", "learning", "graphene_md.h5"))
+    ap.add_argument("--eps0", type=float, default=EPS0, help="fracture_train: stretch in x1 before the run")
+    ap.add_argument("--v0", type=float, default=V0, help="fracture_train: edge speed at the lower edge [A/ps]")
     ap.add_argument("--coarse-grain", default=os.path.join(REPO, "build", "bench", "learn_coarse_grain"))
     a = ap.parse_args()
     os.makedirs(a.cache, exist_ok=True)
@@ -123,7 +125,7 @@ def main():
     for name, fx, fy in disk_loads():
         jobs.append(("validation", name, "quasi_static.lmp", dict(base, fx=fx, fy=fy), "sample.txt"))
     frac = {"bond": BOND, "frames": FRAMES, "eps0": 0.0, "v0": 0.0, "b0": 0.0, "tr": 1.0}
-    jobs.append(("fracture_train", "edges", "fracture.lmp", dict(frac, case="edges", eps0=EPS0, v0=V0),
+    jobs.append(("fracture_train", "edges", "fracture.lmp", dict(frac, case="edges", eps0=a.eps0, v0=a.v0),
                  "frames.txt"))
     jobs.append(("fracture_test", "pulse", "fracture.lmp", dict(frac, case="pulse", b0=PULSE_B0, tr=PULSE_TR),
                  "frames.txt"))
