@@ -2,7 +2,7 @@
 // (variable projection + Levenberg-Marquardt, 003 Algorithm 1 (iv)) for every (delta, P) of a grid, the pair
 // chosen by the validation residual; solvability (003:(37)) and the explicit stability limit of each kernel.
 //   learn_lps [--data data/learning/graphene_md.h5] [--deltas 10,15,20,25] [--orders 1,2,3,4] [--margin 1]
-//             [--increments] [--s0-set fracture_train|fracture_test]
+//             [--increments] [--s0-set fracture_train|fracture_test] [--nonnegative-kernel] [--paper-operator]
 // then s0 by a 1-D minimization on frames 5-20 of the fracture training sample (003 Algorithm 1 (v)).
 #include <algorithm>
 #include <chrono>
@@ -17,6 +17,7 @@
 #include "learning/fracture_residual.hpp"
 #include "learning/kernel_fit.hpp"
 #include "learning/learned_lps_force_model.hpp"
+#include "learning/md_fracture_samples.hpp"
 #include "learning/lps_symbol.hpp"
 #include "solvers/dynamic_problem.hpp"
 #include "solvers/stability_limit.hpp"
@@ -39,7 +40,8 @@ int main(int argc, char** argv) {
   std::size_t firstFrame = 5, lastFrame = 20;
   double margin = 1.0;
   std::size_t scanStride = 8;
-  bool increments = false, matchedHorizon = false;
+  bool increments = false, paperOperator = false;
+  KernelFitOptions fitOptions;
   std::string s0Set = "fracture_train";
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--deltas", deltas, "horizons [A]")->delimiter(',');
@@ -49,8 +51,10 @@ int main(int argc, char** argv) {
   app.add_option("--scan-stride", scanStride, "print every n-th point of the s0 scan");
   app.add_option("--s0-set", s0Set, "fracture sample of the s0 step (003: fracture_train; fracture_test: IV)");
   app.add_flag("--increments", increments, "s0 step on u - u(frame 0): frame 0 as the unstressed reference state");
-  app.add_flag("--matched-horizon", matchedHorizon,
-               "s0 step with the horizon at the training lattice's delta/h (the training stencil's bonds)");
+  app.add_flag("--paper-operator", paperOperator,
+               "s0 step with 003's operator (corrected dilatation, free-surface sums, delta/h = delta / 5 A) instead "
+               "of the prediction's");
+  app.add_flag("--nonnegative-kernel", fitOptions.nonnegative, "fit with every Bernstein coefficient D_k >= 0 (K >= 0)");
   app.add_option("--margin", margin, "residual points lie this many delta inside the sheet (003: 2)");
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
   try {
@@ -74,7 +78,7 @@ int main(int argc, char** argv) {
         const auto t1 = std::chrono::steady_clock::now();
         const LatticeStencil st = makeLatticeStencil(train.lattice.hx, train.lattice.hy, delta);
         StaticResidual res(train.lattice, st, P, train.samples, train.weight);
-        const KernelFit fit = fitKernel(res);
+        const KernelFit fit = fitKernel(res, fitOptions);
         StaticResidual resVal(val.lattice, st, P, val.samples, val.weight);
         const double vloss = relativeResidual(resVal, fit.kernel, fit.lambda, fit.mu);
         const Solvability sol = checkSolvability(train.lattice, st, fit.kernel, fit.lambda, fit.mu);
@@ -117,9 +121,14 @@ int main(int argc, char** argv) {
     if (increments)
       for (std::size_t f = frames.u.size(); f-- > 0;)
         for (std::size_t k = 0; k < frames.u[f].size(); ++k) frames.u[f][k] -= frames.u[0][k];
-    const double fdelta = matchedHorizon ? best.delta * frac.grid.hx / train.lattice.hx : best.delta;
+    const LearnedModel model{f.kernel, f.lambda, f.mu, train.lattice.hx};
+    PredictionVariant variant;  // the operator the prediction runs (learning/md_fracture_samples.hpp)
+    if (paperOperator) variant = {.freeSurface = true, .correctedDilatation = true, .referenceSpacing = kPaperSpacing};
+    const double fdelta = predictionHorizon(frac.grid, model, variant);
     const LatticeStencil fst = makeLatticeStencil(frac.grid.hx, frac.grid.hy, fdelta);
-    const DamagedLpsOperator op(frac.grid, fst, BernsteinKernel{fdelta, f.kernel.alpha, f.kernel.D}, f.lambda, f.mu);
+    DamagedLpsOperator op(frac.grid, fst, BernsteinKernel{fdelta, f.kernel.alpha, f.kernel.D}, f.lambda, f.mu);
+    op.setCorrectedDilatation(variant.correctedDilatation);
+    op.setFreeSurfaceTerms(variant.freeSurface);
     // The MD slit (x1 = 0, x2 from -50 to -25 A) is broken from the start.
     const FractureResidual fres(frames, op, firstFrame, lastFrame, margin * fdelta, op.slit(0, -60, 0, -25));
     double smax = 0;  // largest finite stretch

@@ -1,11 +1,12 @@
 // Prediction step of 003 (Sec. 5.2-5.4): the learned LPS model (kernel and moduli fitted here on the static
-// sets, delta = 20 A, P = 4, the choice of learn_lps) runs the coarse-grained fracture samples forward from
-// frame 0 and is compared with the MD frames: relative displacement and damage errors over 40 frames.
+// sets; by default the project's model, K >= 0 with delta = 10 A, P = 2, the choice of learn_lps
+// --nonnegative-kernel) runs the coarse-grained fracture samples forward from frame 0 and is compared with the
+// MD frames: relative displacement and damage errors over 40 frames.
 //   learn_predict [--data data/learning/graphene_md.h5] [--s0 0.11] [--substeps 8] [--layer 1]
 //                 [--scan 0.05,0.08,0.11,0.15,0.2] [--increments] [--diagnose] [--per-frame]
-//                 [--no-free-surface] [--matched-horizon]
+//                 [--signed-kernel --delta 20 --order 4] [--paper-horizon] [--corrected-dilatation] [--free-surface]
 // Samples: III (training, h = 5 A; vertical edges prescribed), IV (test, h = 5 A; free edges, body force),
-// III on h = 3.17 A with delta = 4 h and s0 sqrt(5/3.17) (003 Sec. 5.4).
+// III on h = 3.17 A with s0 sqrt(5/3.17) (003 Sec. 5.4); delta/h is the same on every grid.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -72,7 +73,7 @@ constexpr double kHalfSide = 50.0;  // the MD sheet is [-50, 50]^2 A, the slit x
 // traction-free lateral strain for that stretch (plane stress: sigma22 = 0 -> e22 = -lambda/(lambda+2mu) e11),
 // the force L_KN of both linear fields and how far the model moves them in 40 frames from rest with the edge
 // layers held and no damage, without and with the slit (broken from the start); the same from MD frame 0.
-void diagnose(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& s, const KernelFit& fit,
+void diagnose(const DamagedLpsOperator& op, const FractureFrames& data, const PredictionSetup& s, const LearnedModel& fit,
               double delta) {
   const CoarseGrid& g = op.grid();
   double n = 0, sx = 0, sxx = 0, sxu = 0, su = 0, sy = 0, syy = 0, syv = 0, sv = 0;
@@ -164,19 +165,17 @@ void modeGrowth(const DamagedLpsOperator& op, const FractureFrames& data, const 
 
 // increments: the frames minus frame 0, i.e. frame 0 taken as the unstressed reference state (sample III
 // is pre-stretched by 10% in MD, a state 003's sample is not in and the learned linear model is not made for).
-Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const KernelFit& fit, double s0,
-                std::size_t substeps, double layer, bool increments, bool freeSurface, double horizon,
-                bool diagnostics = false) {
+Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const LearnedModel& model, double s0,
+                std::size_t substeps, bool increments, const PredictionVariant& variant, bool diagnostics = false) {
   const auto t0 = std::chrono::steady_clock::now();
   FractureFrames data = fractureFrames(set);
   if (increments)
     for (std::size_t f = data.u.size(); f-- > 0;)
       for (std::size_t k = 0; k < data.u[f].size(); ++k) data.u[f][k] -= data.u[0][k];
-  const PredictionCase pc =
-      predictionCase(set.grid, smp, {fit.kernel, fit.lambda, fit.mu}, s0, substeps, layer, freeSurface, horizon);
+  const PredictionCase pc = predictionCase(set.grid, smp, model, s0, substeps, variant);
   const DamagedLpsOperator& op = pc.op;
   const PredictionSetup& s = pc.setup;
-  const double delta = horizon > 0 ? horizon : smp.deltaPerH > 0 ? smp.deltaPerH * set.grid.hx : fit.kernel.delta;
+  const double delta = predictionHorizon(set.grid, model, variant);
   Outcome out;
   out.s0 = s.s0;
   out.points = set.grid.size();
@@ -185,12 +184,13 @@ Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const Ker
   for (const double v : data.u[s.lastFrame]) out.rmsLast += v * v;
   out.rmsLast = std::sqrt(out.rmsLast / static_cast<double>(set.grid.size()));
   if (diagnostics) {
-    const BernsteinKernel kernel{delta, fit.kernel.alpha, fit.kernel.D};
-    describeStencil("of this grid:", makeLatticeStencil(set.grid.hx, set.grid.hy, delta), kernel, fit.lambda, fit.mu);
+    const BernsteinKernel kernel{delta, model.kernel.alpha, model.kernel.D};
+    describeStencil("of this grid:", makeLatticeStencil(set.grid.hx, set.grid.hy, delta), kernel, model.lambda,
+                    model.mu);
     modeGrowth(op, data, s, false);
     modeGrowth(op, data, s, true);
   }
-  if (diagnostics && smp.edgesDriven) diagnose(op, data, s, fit, delta);
+  if (diagnostics && smp.edgesDriven) diagnose(op, data, s, model, delta);
   const FractureRun run = predictFracture(op, data, s);
   out.finite = run.finite;
   if (run.finite) out.error = predictionError(op, data, run, s);
@@ -203,24 +203,28 @@ Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const Ker
 int main(int argc, char** argv) {
   CLI::App app{"Predict the MD fracture samples with the learned LPS model of 003 and print the errors"};
   std::string path = "data/learning/graphene_md.h5";
-  double delta = 20, s0 = 0.11, layer = 1.0;
-  int order = 4;
+  double delta = kLearnedDelta, s0 = 0.11;
+  PredictionVariant variant;
+  int order = kLearnedOrder;
   std::size_t substeps = 8;
   std::vector<double> scan;
-  bool increments = false, diagnostics = false, perFrame = false, noFreeSurface = false, matchedHorizon = false;
+  bool increments = false, diagnostics = false, perFrame = false, paperHorizon = false, signedKernel = false;
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
-  app.add_option("--delta", delta, "horizon of the learned kernel [A] (learn_lps's choice: 20)");
-  app.add_option("--order", order, "Bernstein order P (learn_lps's choice: 4)");
+  app.add_option("--delta", delta, "horizon of the learned kernel [A] (learn_lps --nonnegative-kernel's choice: 10; 003: 20)");
+  app.add_option("--order", order, "Bernstein order P (learn_lps --nonnegative-kernel's choice: 2; learn_lps's: 4)");
   app.add_option("--s0", s0, "critical stretch at h = 5 A (003: 0.11)");
   app.add_option("--substeps", substeps, "explicit steps per MD frame interval");
-  app.add_option("--layer", layer, "width of the prescribed edge layers of sample III, in delta");
+  app.add_option("--layer", variant.layer, "width of the prescribed edge layers of sample III, in delta");
   app.add_flag("--increments", increments, "predict u - u(frame 0): frame 0 as the unstressed reference state");
-  app.add_flag("--no-free-surface", noFreeSurface, "without the free-surface sums of 003:(30), for comparison");
+  app.add_flag("--free-surface", variant.freeSurface, "with the free-surface sums of 003:(30)");
+  app.add_flag("--corrected-dilatation", variant.correctedDilatation,
+               "003's corrected dilatation (31)-(32) instead of theta of 003:(15) with the full neighbourhood's m");
   app.add_flag("--per-frame", perFrame, "also the displacement error of every 5th frame");
   app.add_flag("--diagnose", diagnostics,
                "is the model on each grid's stencil stable, and (III) is frame 0 an equilibrium of it?");
-  app.add_flag("--matched-horizon", matchedHorizon,
-               "each sample's horizon at the training lattice's delta/h (its stencil then has the training stencil's bonds)");
+  app.add_flag("--paper-horizon", paperHorizon,
+               "delta/h = delta / 5 A on every grid (003) instead of delta / h of the training lattice (its bonds)");
+  app.add_flag("--signed-kernel", signedKernel, "003's kernel: D_k of either sign (else every D_k >= 0, K >= 0)");
   app.add_option("--scan", scan, "also: errors on sample III for these s0")->delimiter(',');
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
   try {
@@ -229,7 +233,8 @@ int main(int argc, char** argv) {
     const StaticData train = staticData(file.sets.at("train"));
     StaticResidual res(train.lattice, makeLatticeStencil(train.lattice.hx, train.lattice.hy, delta), order,
                        train.samples, train.weight);
-    const KernelFit fit = fitKernel(res);
+    const KernelFit fit = fitKernel(res, {.nonnegative = !signedKernel});
+    const LearnedModel model{fit.kernel, fit.lambda, fit.mu, train.lattice.hx};
     std::printf("kernel fit (static training set, delta = %.1f A, P = %d): alpha = %.4f, lambda = %.4f TPa, "
                 "mu = %.4f TPa, relative residual %.4f, %.1f s\n  D =",
                 delta, order, fit.kernel.alpha, fit.lambda * kTPaPerEvA3, fit.mu * kTPaPerEvA3, fit.relativeResidual,
@@ -241,13 +246,14 @@ int main(int argc, char** argv) {
     const double interval = file.sets.at("fracture_train").frameInterval;
     std::printf("frame interval %.3e s, %zu steps per frame: dt = %.3e s; s0 = %.4f (at h = 5 A), eta = 0.05, "
                 "edge layers of III %.2f delta%s%s\n\n",
-                interval, substeps, interval / static_cast<double>(substeps), s0, layer,
+                interval, substeps, interval / static_cast<double>(substeps), s0, variant.layer,
                 increments ? "; displacements from frame 0 (--increments)" : "",
-                matchedHorizon ? "; horizon delta h / h_train (--matched-horizon)" : "");
+                paperHorizon ? "; delta/h = delta / 5 A (--paper-horizon)" : "");
     const auto run = [&](const MdFractureSample& smp, double s0Run, bool diagnose) {
       const CoarseDataSet& set = file.sets.at(smp.set);
-      const double horizon = matchedHorizon ? delta * set.grid.hx / train.lattice.hx : 0.0;
-      return predict(set, smp, fit, s0Run, substeps, layer, increments, !noFreeSurface, horizon, diagnose);
+      PredictionVariant v = variant;
+      v.referenceSpacing = paperHorizon ? kPaperSpacing : 0.0;
+      return predict(set, smp, model, s0Run, substeps, increments, v, diagnose);
     };
     const auto& samples = kMdFractureSamples;
     std::printf("u, phi err: sqrt(sum_f |pred - MD|^2 / sum_f |MD|^2), frames 1-40; mean: of the per-frame ratios; "

@@ -1,6 +1,7 @@
 // Writes the FMU's resources/md_fracture_samples.bin for scene learnedFracture: the LPS model learned from
-// the static MD sets (delta = 20 A, P = 4: learn_lps's choice; the fit of bench/learn_predict) and the frames
-// of the three fracture samples, from the committed coarse-grained data (HDF5, which the FMU does not read).
+// the static MD sets (the project's model, K >= 0, kLearnedDelta and kLearnedOrder: the fit of
+// bench/learn_predict) and the frames of the three fracture samples, from the committed coarse-grained data
+// (HDF5, which the FMU does not read).
 //   make_md_fracture_samples data/learning/graphene_md.h5 resources/md_fracture_samples.bin
 #include <cstdio>
 #include <exception>
@@ -18,15 +19,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    constexpr double kDelta = 20;
-    constexpr int kOrder = 4;
     const CoarseDataFile file = readCoarseData(argv[1]);
     const StaticData train = staticData(file.sets.at("train"));
-    StaticResidual res(train.lattice, makeLatticeStencil(train.lattice.hx, train.lattice.hy, kDelta), kOrder,
-                       train.samples, train.weight);
-    const KernelFit fit = fitKernel(res);
+    StaticResidual res(train.lattice, makeLatticeStencil(train.lattice.hx, train.lattice.hy, kLearnedDelta),
+                       kLearnedOrder, train.samples, train.weight);
+    const KernelFit fit = fitKernel(res, {.nonnegative = true});
     MdFractureData data;
-    data.model = {fit.kernel, fit.lambda, fit.mu};
+    data.model = {fit.kernel, fit.lambda, fit.mu, train.lattice.hx};
     for (const MdFractureSample& s : kMdFractureSamples) {
       const CoarseDataSet& set = file.sets.at(s.set);
       data.samples.push_back(fractureFrames(set));

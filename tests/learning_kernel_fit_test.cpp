@@ -84,6 +84,33 @@ TEST_CASE("without noise the fit recovers kernel, lambda and mu to 1e-8", "[lear
   CHECK(fit.kernel.weightedVolume() == Approx(1.0).epsilon(1e-12));  // the reported normalization
 }
 
+TEST_CASE("the nonnegative fit recovers a nonnegative kernel to 1e-8 and keeps K >= 0 on a sign-changing one",
+          "[learning]") {
+  const LatticeStencil st = makeLatticeStencil(5.0, 5.0, kDelta);
+  Truth t{BernsteinKernel{kDelta, 0.5, {0.1, 0.4, 0.2, 0.3}}, -0.2, 0.7};  // xi_k, all >= 0
+  for (int k = 0; k <= 3; ++k) t.kernel.D[static_cast<std::size_t>(k)] /= t.kernel.weightedVolumeCoefficient(k);
+  std::vector<StaticSample> samples = cosineSamples(kLattice, st, t);
+  const std::vector<double> w = unitWeights(samples);
+  StaticResidual res(kLattice, st, 3, std::move(samples), w);
+  const KernelFit fit = fitKernel(res, {.nonnegative = true});
+  INFO("iterations " << fit.iterations << ", residual " << fit.relativeResidual);
+  REQUIRE(fit.converged);
+  CHECK(std::abs(fit.lambda - t.lambda) < 1e-8 * std::abs(t.lambda));
+  CHECK(std::abs(fit.mu - t.mu) < 1e-8 * t.mu);
+  CHECK(std::abs(fit.kernel.alpha - t.kernel.alpha) < 1e-8);
+  for (int k = 0; k <= 3; ++k) CHECK(std::abs(fit.kernel.D[k] - t.kernel.D[k]) < 1e-8 * t.kernel.D[1]);
+
+  // The sign-changing truth cannot be matched: the fit stays at K >= 0 and leaves a residual.
+  const Truth s = syntheticTruth(kDelta);
+  std::vector<StaticSample> signedSamples = cosineSamples(kLattice, st, s);
+  const std::vector<double> ws = unitWeights(signedSamples);
+  StaticResidual signedRes(kLattice, st, 3, std::move(signedSamples), ws);
+  const KernelFit nn = fitKernel(signedRes, {.nonnegative = true});
+  for (const double d : nn.kernel.D) CHECK(d >= 0);
+  CHECK(nn.relativeResidual > 1e-3);
+  CHECK(fitKernel(signedRes).relativeResidual < 1e-10);
+}
+
 TEST_CASE("with 1% noise on b the 95% intervals cover the truth in at least 18 of 20 seeds", "[learning]") {
   const Truth t = syntheticTruth(kDelta);
   const LatticeStencil st = makeLatticeStencil(5.0, 5.0, kDelta);

@@ -121,8 +121,9 @@ std::vector<double> DamagedLpsOperator::apply(const std::vector<double>& u, cons
     v1[0] /= nv, v1[1] /= nv;
     const double tol = kPseudoInverseTolerance * std::max(std::abs(l1), 1e-300);
     const double i1 = std::abs(l1) > tol ? 1 / l1 : 0, i2 = std::abs(l2) > tol ? 1 / l2 : 0;
-    const double M[3] = {i1 * v1[0] * v1[0] + i2 * v1[1] * v1[1], (i1 - i2) * v1[0] * v1[1],
-                         i1 * v1[1] * v1[1] + i2 * v1[0] * v1[0]};
+    double M[3] = {i1 * v1[0] * v1[0] + i2 * v1[1] * v1[1], (i1 - i2) * v1[0] * v1[1],
+                   i1 * v1[1] * v1[1] + i2 * v1[0] * v1[0]};
+    if (!corrected_) M[0] = 1, M[1] = 0, M[2] = 1;
     double t = 0.0;
     for (std::size_t s = 0; s < S; ++s) {
       const std::ptrdiff_t q = neighbour_[p * S + s];

@@ -28,6 +28,13 @@ class DamagedLpsOperator {
   const CoarseGrid& grid() const { return grid_; }
   // Off: without the free-surface sums of 003:(30) (its last three), for comparison.
   void setFreeSurfaceTerms(bool on) { freeSurface_ = on; }
+  // Off: theta of 003:(15) with the full neighbourhood's m (the shape tensor (32) taken as the identity, which it
+  // is for a full neighbourhood on a square lattice). Without the free-surface sums the operator is then the
+  // gradient of a pointwise energy, a (lambda - mu) theta^2 + b mu sum gamma K W (xi . eta)^2 / |xi|^2, which by
+  // Cauchy-Schwarz (K >= 0) stays nonnegative at any damage when it is for an intact isotropic stretch
+  // (lambda + mu >= 0). The corrected theta (31) does not shrink with the bonds, and with lambda < mu its
+  // negative term can outweigh them (tests/learning_damaged_stability_test.cpp).
+  void setCorrectedDilatation(bool on) { corrected_ = on; }
 
  private:
   std::vector<double> bondStates(const std::vector<double>& maxStretch, double s0) const;  // 003:(28)
@@ -35,7 +42,7 @@ class DamagedLpsOperator {
   CoarseGrid grid_;
   LatticeStencil stencil_;
   double lambda_, mu_, eta_;
-  bool freeSurface_ = true;
+  bool freeSurface_ = true, corrected_ = true;
   std::vector<double> KW_;                 // K(r_s) W_s
   double m_ = 0;                           // m_i of a full neighbourhood, 003 below (18)
   std::vector<std::ptrdiff_t> neighbour_;  // [p S + s], -1 outside the lattice

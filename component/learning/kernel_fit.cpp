@@ -14,15 +14,20 @@ struct Model {
   std::vector<double> D;
 };
 
-// (xi_0..xi_{P-1}, alpha) -> alpha, D with xi_P = 1 - sum xi_k and D_k = xi_k / c_k(alpha).
-Model modelOf(const StaticResidual& res, const Eigen::VectorXd& beta) {
+// (beta_0..beta_{P-1}, alpha) -> alpha, D with D_k = xi_k / c_k(alpha) and xi as in kernel_fit.hpp: signed,
+// xi_k = beta_k and xi_P = 1 - sum xi_k; nonnegative, xi_k = beta_k^2 / (1 + sum beta_j^2), xi_P = 1 / (...).
+Model kernelModel(const StaticResidual& res, const Eigen::VectorXd& beta, bool nonnegative) {
   const int P = res.order();
   Model m{beta[P], {}};
   BernsteinKernel k{res.delta(), m.alpha, std::vector<double>(static_cast<std::size_t>(P) + 1, 0.0)};
+  const double scale = nonnegative ? 1.0 / (1.0 + beta.head(P).squaredNorm()) : 1.0;
   double last = 1.0;
   for (int i = 0; i <= P; ++i) {
-    const double xi = i < P ? beta[i] : last;
-    if (i < P) last -= xi;
+    double xi = last;
+    if (nonnegative)
+      xi = (i < P ? beta[i] * beta[i] : 1.0) * scale;
+    else if (i < P)
+      xi = beta[i], last -= xi;
     m.D.push_back(xi / k.weightedVolumeCoefficient(i));
   }
   return m;
@@ -61,8 +66,11 @@ KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
   const int P = res.order();
   const Eigen::Index nb = P + 1;
   Eigen::VectorXd beta(nb);
-  for (int i = 0; i < P; ++i) beta[i] = 1.0 / (P + 1);
+  for (int i = 0; i < P; ++i) beta[i] = o.nonnegative ? 1.0 : 1.0 / (P + 1);  // all xi equal
   beta[P] = o.alpha0;
+  const auto modelOf = [&](const StaticResidual& r, const Eigen::VectorXd& b) {
+    return kernelModel(r, b, o.nonnegative);
+  };
 
   KernelFit fit;
   const auto evaluate = [&](const Eigen::VectorXd& b) {

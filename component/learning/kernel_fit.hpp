@@ -7,7 +7,9 @@
 //
 // Parameters: the kernel enters only through K/m (003:(17)-(18)), so its scale is fixed by int K|z|^2 = 1.
 // The fit works with xi_k = D_k c_k (the share of basis k in that integral, sum xi_k = 1, xi_P eliminated)
-// and alpha; results are reported as D_k = xi_k / c_k(alpha).
+// and alpha; results are reported as D_k = xi_k / c_k(alpha). With `nonnegative` the fit's parameters are b_k
+// with xi_k = b_k^2 / (1 + sum b_j^2) (k < P) and xi_P = 1 / (1 + sum b_j^2): every D_k >= 0, so K >= 0 on
+// [0, delta] (the Bernstein basis is nonnegative), and breaking bonds cannot leave negative stiffness behind.
 #include <cstddef>
 #include <vector>
 
@@ -22,6 +24,7 @@ struct KernelFitOptions {
   double alpha0 = 1.0;            // start: K = c r^-alpha0 (all xi equal)
   int maxIterations = 200;
   double stepTolerance = 1e-13;   // relative size of the last LM step
+  bool nonnegative = false;       // K >= 0: D_k >= 0 by the parametrization above
 };
 
 struct KernelFit {

@@ -13,23 +13,28 @@ namespace peristep::learning {
 namespace {
 
 constexpr double kHalfSide = 50.0;  // the MD sheet is [-50, 50]^2 A, the slit x1 = 0, x2 from -50 to -25 A
-constexpr char kMagic[] = "PeriStep MD fracture samples 1";
+constexpr char kMagic[] = "PeriStep MD fracture samples 2";
 
 }  // namespace
 
+double predictionHorizon(const CoarseGrid& grid, const LearnedModel& model, const PredictionVariant& v) {
+  return model.kernel.delta * grid.hx / (v.referenceSpacing > 0 ? v.referenceSpacing : model.trainingSpacing);
+}
+
 PredictionCase predictionCase(const CoarseGrid& grid, const MdFractureSample& sample, const LearnedModel& model,
-                              double s0AtH5, std::size_t substeps, double layer, bool freeSurface, double horizon) {
-  const double delta = horizon > 0 ? horizon : sample.deltaPerH > 0 ? sample.deltaPerH * grid.hx : model.kernel.delta;
+                              double s0AtH5, std::size_t substeps, const PredictionVariant& v) {
+  const double delta = predictionHorizon(grid, model, v);
   const BernsteinKernel kernel{delta, model.kernel.alpha, model.kernel.D};  // K/m only: the scale does not matter
   PredictionCase c{DamagedLpsOperator(grid, makeLatticeStencil(grid.hx, grid.hy, delta), kernel, model.lambda, model.mu),
                    {}};
-  c.op.setFreeSurfaceTerms(freeSurface);
+  c.op.setFreeSurfaceTerms(v.freeSurface);
+  c.op.setCorrectedDilatation(v.correctedDilatation);
   c.setup.s0 = s0AtH5 * sample.s0Scale;
   c.setup.substeps = substeps;
   // The slit just right of x1 = 0: on the fine grid a lattice column lies on x1 = 0.
   c.setup.initialStretch = c.op.slit(1e-6, -kHalfSide - 10, 1e-6, -25);
   for (std::size_t p = 0; p < grid.size(); ++p)
-    c.setup.prescribed.push_back(sample.edgesDriven && std::abs(grid.x(p)) > kHalfSide - layer * delta);
+    c.setup.prescribed.push_back(sample.edgesDriven && std::abs(grid.x(p)) > kHalfSide - v.layer * delta);
   return c;
 }
 
@@ -41,6 +46,7 @@ void writeMdFractureData(const std::string& path, const MdFractureData& d) {
   w.putArray(d.model.kernel.D);
   w.put(d.model.lambda);
   w.put(d.model.mu);
+  w.put(d.model.trainingSpacing);
   w.put<std::uint64_t>(d.samples.size());
   for (std::size_t k = 0; k < d.samples.size(); ++k) {
     const FractureFrames& f = d.samples[k];
@@ -73,6 +79,7 @@ MdFractureData readMdFractureData(const std::string& path) {
     d.model.kernel.D = r.getArray<double>();
     d.model.lambda = r.get<double>();
     d.model.mu = r.get<double>();
+    d.model.trainingSpacing = r.get<double>();
     const auto samples = r.get<std::uint64_t>();
     for (std::uint64_t k = 0; k < samples; ++k) {
       FractureFrames f;

@@ -17,34 +17,56 @@ namespace peristep::learning {
 struct MdFractureSample {
   const char* name;
   const char* set;    // data set of the coarse-grained file
-  double deltaPerH;   // 0: the learned horizon; else delta = deltaPerH * h (003 Sec. 5.4: 4 h)
   bool edgesDriven;   // III: the vertical edge layers follow the frames; IV: free edges, body force
   double s0Scale;     // s0 ~ 1/sqrt(delta) (003 Sec. 5.4)
   const char* paper;  // 003's displacement / damage errors [%]
 };
 
 inline const std::array<MdFractureSample, 3> kMdFractureSamples{{
-    {"III training, h = 5 A", "fracture_train", 0, true, 1.0, "27 / 9"},
-    {"IV test, h = 5 A", "fracture_test", 0, false, 1.0, "58 / 15"},
-    {"III training, h = 3.17 A", "fracture_train_fine", 4, true, std::sqrt(5.0 / 3.17), "19 / 30"},
+    {"III training, h = 5 A", "fracture_train", true, 1.0, "27 / 9"},
+    {"IV test, h = 5 A", "fracture_test", false, 1.0, "58 / 15"},
+    {"III training, h = 3.17 A", "fracture_train_fine", true, std::sqrt(5.0 / 3.17), "19 / 30"},
 }};
 
-// The learned model: kernel (its horizon is the learned delta) and Lame moduli [eV/A^3].
+// The learned model: kernel (its horizon is the learned delta), Lame moduli [eV/A^3] and the spacing of the
+// lattice it was learned on [A] (x; the training stencil is the bonds within delta on that lattice).
 struct LearnedModel {
   BernsteinKernel kernel;
   double lambda = 0, mu = 0;
+  double trainingSpacing = 5.0;
+};
+
+// The project's learned model: the validation choice of bench/learn_lps --nonnegative-kernel (K >= 0: with 003's
+// sign-changing kernels the damaged operator is unstable, bench/README.md "Prediction").
+constexpr double kLearnedDelta = 10.0;
+constexpr int kLearnedOrder = 2;
+
+// 003's nominal coarse spacing: 003 Sec. 5 runs delta = 20 A = 4 h on h = 5 A and keeps delta/h = 4 on the
+// fine grid (Sec. 5.4).
+constexpr double kPaperSpacing = 5.0;
+
+// Choices of a prediction that bench/learn_predict varies. The defaults are the project's model, which the scene
+// runs: stable at any damage with K >= 0 (tests/learning_damaged_stability_test.cpp); 003's set-up is the
+// free-surface sums, the corrected dilatation and kPaperSpacing (bench/README.md, "Prediction").
+struct PredictionVariant {
+  double layer = 1.0;                // width of III's prescribed edge layers, in delta
+  bool freeSurface = false;          // the free-surface sums of 003:(30) (made for the corrected dilatation)
+  bool correctedDilatation = false;  // theta of 003:(31)-(32); off: DamagedLpsOperator::setCorrectedDilatation
+  // delta/h on every grid is the learned delta over this spacing; 0: the model's training spacing, so that the
+  // stencil has the training stencil's bonds (003 Sec. 5.4 keeps delta/h fixed too, at kPaperSpacing).
+  double referenceSpacing = 0;
 };
 
 // One sample's prediction: the operator on the sample's grid and 003's set-up (the slit's bonds broken, the
-// edge layers `layer` horizons wide following the frames for III, s0 = s0AtH5 * s0Scale). horizon > 0
-// replaces the sample's horizon rule (bench/learn_predict --matched-horizon).
+// edge layers following the frames for III, s0 = s0AtH5 * s0Scale).
 struct PredictionCase {
   DamagedLpsOperator op;
   PredictionSetup setup;
 };
 PredictionCase predictionCase(const CoarseGrid& grid, const MdFractureSample& sample, const LearnedModel& model,
-                              double s0AtH5, std::size_t substeps, double layer = 1.0, bool freeSurface = true,
-                              double horizon = 0);
+                              double s0AtH5, std::size_t substeps, const PredictionVariant& variant = {});
+// The horizon the prediction runs with on `grid`.
+double predictionHorizon(const CoarseGrid& grid, const LearnedModel& model, const PredictionVariant& variant = {});
 
 // The model and, per sample of kMdFractureSamples in order, its frames 0..40 and the frame interval [s].
 struct MdFractureData {
