@@ -104,10 +104,10 @@ CoarseDataSet staticSet(const std::vector<std::string>& files, double& strain) {
   return set;
 }
 
-CoarseDataSet fractureSet(const std::vector<Frame>& frames, double h) {
+CoarseDataSet fractureSet(const std::vector<Frame>& frames, double h, int frameSteps) {
   const auto n = static_cast<std::size_t>(std::floor(100.0 / h));
   const double x0 = -0.5 * h * static_cast<double>(n - 1);
-  CoarseDataSet set{CoarseGrid{n, n, x0, x0, h, h, false}, 99 * 0.5e-15, kThickness, kRadius, {}};
+  CoarseDataSet set{CoarseGrid{n, n, x0, x0, h, h, false}, frameSteps * 0.5e-15, kThickness, kRadius, {}};
   const std::vector<double>&X = frames[0].column.at("f_ref[1]"), &Y = frames[0].column.at("f_ref[2]");
   const CoarseGraining cg(set.grid, X, Y, std::vector<double>(X.size(), kMass), kRadius, kThickness);
   for (const Frame& f : frames) {
@@ -128,6 +128,8 @@ int main(int argc, char** argv) {
   std::string manifest, out;
   app.add_option("--manifest", manifest, "manifest written by generate.py")->required();
   app.add_option("--out", out, "HDF5 file")->required();
+  int frameSteps = 99;
+  app.add_option("--frame-steps", frameSteps, "MD steps of 0.5 fs between the fracture sets' frames");
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
   try {
     const auto t0 = std::chrono::steady_clock::now();
@@ -150,8 +152,8 @@ int main(int argc, char** argv) {
     for (const char* s : {"fracture_train", "fracture_test"}) {
       if (!files.count(s)) continue;
       const std::vector<Frame> frames = readDump(files[s].front());
-      data.sets[s] = fractureSet(frames, 5.0);
-      if (std::string(s) == "fracture_train") data.sets["fracture_train_fine"] = fractureSet(frames, 3.17);
+      data.sets[s] = fractureSet(frames, 5.0, frameSteps);
+      if (std::string(s) == "fracture_train") data.sets["fracture_train_fine"] = fractureSet(frames, 3.17, frameSteps);
       std::cout << s << ": " << frames.size() << " frames\n";
     }
     writeCoarseData(out, data);

@@ -17,6 +17,7 @@ present is not repeated. Data sets (003 Sec. 5; choices not given in 003 are mar
               without the stretch: the crack starts at frame 9, 7, 6, 5, 4 for V = 20, 30, 40, 50, 60 A/ps.
   fracture_test (IV): same sheet, free edges, body-force pulse of 003 Sec. 5 (IV); CHOSEN: b0 = 0.8 eV/A,
               tr = 0.5 ps (crack starts near frame 9 and grows to frame 40; b0 = 2 fragments the sheet).
+  Frames of III and IV every 99 MD steps of 0.5 fs (003); --frame-steps N records every N steps over the same time.
 """
 import argparse
 import hashlib
@@ -37,7 +38,7 @@ C66_EV_A2 = 241.89 / 16.0218  # N/m -> eV/A^2 (measured, lattice_constants.lmp)
 STRAIN = 0.005
 EPS0, V0 = 0.10, 2.0       # fracture_train: stretch before the run, edge speed [A/ps] at the lower edge
 PULSE_B0, PULSE_TR = 0.8, 0.5  # eV/A, ps: fracture_test pulse
-FRAMES = 40
+FRAMES, FRAME_STEPS = 40, 99  # fracture sets: frames of 99 steps of 0.5 fs (4.95e-14 s, 003 Sec. 5)
 TABLE1 = [(0.001, 0, 0, 25), (0, 0.001, 0, 25), (0.001, 0, 0, 15), (0, 0.001, 0, 15), (0.001, 0, 0, 10),
           (0.001, 0, 1, 25), (0, 0.001, 1, 25), (0.001, 0, 1, 15), (0, 0.001, 1, 15), (0.001, 0, 1, 10)]
 
@@ -114,6 +115,8 @@ def main():
     ap.add_argument("--out", default=os.path.join(REPO, "data", "learning", "graphene_md.h5"))
     ap.add_argument("--eps0", type=float, default=EPS0, help="fracture_train: stretch in x1 before the run")
     ap.add_argument("--v0", type=float, default=V0, help="fracture_train: edge speed at the lower edge [A/ps]")
+    ap.add_argument("--frame-steps", type=int, default=FRAME_STEPS,
+                    help="fracture sets: MD steps of 0.5 fs per frame (003: 99); the frames cover the same time")
     ap.add_argument("--coarse-grain", default=os.path.join(REPO, "build", "bench", "learn_coarse_grain"))
     a = ap.parse_args()
     os.makedirs(a.cache, exist_ok=True)
@@ -124,7 +127,8 @@ def main():
         jobs.append(("train", name, "quasi_static.lmp", dict(base, fx=fx, fy=fy), "sample.txt"))
     for name, fx, fy in disk_loads():
         jobs.append(("validation", name, "quasi_static.lmp", dict(base, fx=fx, fy=fy), "sample.txt"))
-    frac = {"bond": BOND, "frames": FRAMES, "eps0": 0.0, "v0": 0.0, "b0": 0.0, "tr": 1.0}
+    frames = FRAMES * FRAME_STEPS // a.frame_steps
+    frac = {"bond": BOND, "frames": frames, "every": a.frame_steps, "eps0": 0.0, "v0": 0.0, "b0": 0.0, "tr": 1.0}
     jobs.append(("fracture_train", "edges", "fracture.lmp", dict(frac, case="edges", eps0=a.eps0, v0=a.v0),
                  "frames.txt"))
     jobs.append(("fracture_test", "pulse", "fracture.lmp", dict(frac, case="pulse", b0=PULSE_B0, tr=PULSE_TR),
@@ -152,7 +156,8 @@ def main():
         for (group, name, _, _, _), (out, _) in zip(jobs[1:], results[1:]):
             fh.write(f"{group} {name} {out}\n")
     os.makedirs(os.path.dirname(a.out), exist_ok=True)
-    subprocess.run([a.coarse_grain, "--manifest", manifest, "--out", a.out], check=True)
+    subprocess.run([a.coarse_grain, "--manifest", manifest, "--out", a.out, "--frame-steps", str(a.frame_steps)],
+                   check=True)
 
 
 if __name__ == "__main__":
