@@ -53,7 +53,7 @@ struct PredictionVariant {
   bool freeSurface = false;          // the free-surface sums of 003:(30) (made for the corrected dilatation)
   bool correctedDilatation = false;  // theta of 003:(31)-(32); off: DamagedLpsOperator::setCorrectedDilatation
   // delta/h on every grid is the learned delta over this spacing; 0: the model's training spacing, so that the
-  // stencil has the training stencil's bonds (003 Sec. 5.4 keeps delta/h fixed too, at kPaperSpacing).
+  // stencil has the training stencil's bonds (003 Sec. 5.4 keeps delta/h fixed too, at delta / kPaperSpacing).
   double referenceSpacing = 0;
 };
 
