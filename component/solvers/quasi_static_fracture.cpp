@@ -30,6 +30,9 @@ constexpr int kRescueIterations = 200;
 // up to this many unknowns in the dense Schur complement (bench/README.md, "Issue 14").
 constexpr double kZoneRatio = 0.1;
 constexpr std::size_t kZoneUnknowns = 3000, kZoneShare = 10;  // at most a tenth of the unknowns
+// A point whose u block has an eigenvalue below this fraction of its largest hangs by its spring in one
+// direction (measured at the fall-backs: 3e-8 to 3e-7, next 1.9e-2); such points come first in a zone.
+constexpr double kNearlyFloatingRatio = 1e-4, kNearlyFloatingPriority = 4.0;
 
 // A numeric factorization priced in preconditioned GMRES iterations (one solve with the factors and one
 // product with A each). Measured with UMFPACK+METIS on glass-ceramic matrices of 16k and 62k unknowns
@@ -231,6 +234,21 @@ std::vector<std::uint8_t> QuasiStaticFracture::intactAt(std::size_t broken) cons
   return intact;
 }
 
+bool QuasiStaticFracture::nearlyFloating(std::size_t p) const {
+  // The smallest eigenvalue of the point's 2 x 2 block of u rows against the largest.
+  const std::int64_t r = disc_->dofs.u[p];
+  if (r < 0) return false;
+  const CsrMatrix& A = system_.A;
+  const auto entry = [&](std::int64_t row, std::int64_t col) {
+    const auto b = A.col.begin() + A.rowStart[row], e = A.col.begin() + A.rowStart[row + 1];
+    const auto k = std::lower_bound(b, e, col);
+    return k != e && *k == col ? A.value[static_cast<std::size_t>(k - A.col.begin())] : 0.0;
+  };
+  const double a11 = entry(r, r), a12 = entry(r, r + 1), a21 = entry(r + 1, r), a22 = entry(r + 1, r + 1);
+  const double half = 0.5 * (a11 + a22), disc = std::sqrt(std::max(0.0, half * half - (a11 * a22 - a12 * a21)));
+  return half - disc < kNearlyFloatingRatio * (half + disc);
+}
+
 std::vector<double> QuasiStaticFracture::zonePriority() const {
   // First the points of the bonds broken since the last zone, the latest first: where the zone missed,
   // damage goes on (the crack tip, a second crack, a corner). At h = 8 um this cut the factorizations
@@ -244,6 +262,12 @@ std::vector<double> QuasiStaticFracture::zonePriority() const {
     const double latest = 2.0 + static_cast<double>(i - first) / static_cast<double>(end - first);
     for (std::size_t p : {nb.owner(k), static_cast<std::size_t>(nb.index[k])}) priority[p] = std::max(priority[p], latest);
   }
+  // Before all, the points that hang by one or a few collinear bonds: across them only their spring holds them,
+  // kSpringRatio of the bond stiffness, which single-precision sparse factors cannot resolve (their refinement
+  // then diverges and the zone falls back to double factors, bench/README.md "Issue 14, session 18"). In the
+  // zone, with their neighbours, they are solved by the dense LU in double.
+  for (std::size_t p = 0; p < priority.size(); ++p)
+    if (stabilized_[p] && nearlyFloating(p)) priority[p] = kNearlyFloatingPriority;
   return priority;
 }
 

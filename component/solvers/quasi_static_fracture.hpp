@@ -110,6 +110,8 @@ class QuasiStaticFracture {
   void factorizeZone(LoadStepReport& report);
   // Per point, its claim to the next crack zone (CrackZoneSolver::planCore).
   std::vector<double> zonePriority() const;
+  // Whether the point hangs by its spring in one direction (its 2 x 2 block of u rows nearly singular).
+  bool nearlyFloating(std::size_t point) const;
   void rebuildZone(LoadStepReport& report);
   void solveInZone(const std::vector<double>& rhs, LoadStepReport& report);
   void solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report);
