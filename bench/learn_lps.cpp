@@ -122,13 +122,10 @@ int main(int argc, char** argv) {
       for (std::size_t f = frames.u.size(); f-- > 0;)
         for (std::size_t k = 0; k < frames.u[f].size(); ++k) frames.u[f][k] -= frames.u[0][k];
     const LearnedModel model{f.kernel, f.lambda, f.mu, train.lattice.hx};
-    PredictionVariant variant;  // the operator the prediction runs (learning/md_fracture_samples.hpp)
-    if (paperOperator) variant = {.freeSurface = true, .correctedDilatation = true, .referenceSpacing = kPaperSpacing};
+    // The operator the prediction runs (learning/md_fracture_samples.hpp), or 003's.
+    const PredictionVariant variant = paperOperator ? kPaperVariant : PredictionVariant{};
     const double fdelta = predictionHorizon(frac.grid, model, variant);
-    const LatticeStencil fst = makeLatticeStencil(frac.grid.hx, frac.grid.hy, fdelta);
-    DamagedLpsOperator op(frac.grid, fst, BernsteinKernel{fdelta, f.kernel.alpha, f.kernel.D}, f.lambda, f.mu);
-    op.setCorrectedDilatation(variant.correctedDilatation);
-    op.setFreeSurfaceTerms(variant.freeSurface);
+    const DamagedLpsOperator op = predictionOperator(frac.grid, model, variant);
     // The MD slit (x1 = 0, x2 from -50 to -25 A) is broken from the start.
     const FractureResidual fres(frames, op, firstFrame, lastFrame, margin * fdelta, op.slit(0, -60, 0, -25));
     double smax = 0;  // largest finite stretch

@@ -14,6 +14,23 @@ namespace {
 // (003:(32)): a nearly collinear remainder of bonds otherwise gives a dilatation of O(1/eigenvalue).
 constexpr double kPseudoInverseTolerance = 1e-2;
 
+// Symmetric 2x2 (pseudo-)inverse M of the shape tensor A (003:(32); 003 Sec. 3.2: isolated points), both
+// stored as (xx, xy, yy).
+void shapeInverse(const double A[3], double M[3]) {
+  const double tr = A[0] + A[2], det = A[0] * A[2] - A[1] * A[1];
+  const double disc = std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
+  const double l1 = 0.5 * tr + disc, l2 = 0.5 * tr - disc;
+  double v1[2] = {A[1], l1 - A[0]};
+  if (std::hypot(v1[0], v1[1]) < 1e-14 * (std::abs(tr) + 1e-300)) v1[0] = 1, v1[1] = 0;
+  const double nv = std::hypot(v1[0], v1[1]);
+  v1[0] /= nv, v1[1] /= nv;
+  const double tol = kPseudoInverseTolerance * std::max(std::abs(l1), 1e-300);
+  const double i1 = std::abs(l1) > tol ? 1 / l1 : 0, i2 = std::abs(l2) > tol ? 1 / l2 : 0;
+  M[0] = i1 * v1[0] * v1[0] + i2 * v1[1] * v1[1];
+  M[1] = (i1 - i2) * v1[0] * v1[1];
+  M[2] = i1 * v1[1] * v1[1] + i2 * v1[0] * v1[0];
+}
+
 std::vector<std::ptrdiff_t> gridNeighbours(const CoarseGrid& g, const LatticeStencil& st) {
   std::vector<std::ptrdiff_t> nb(g.size() * st.size(), -1);
   for (std::size_t p = 0; p < g.size(); ++p) {
@@ -111,19 +128,9 @@ std::vector<double> DamagedLpsOperator::apply(const std::vector<double>& u, cons
       mv[0] += stencil_.zx[s] * stencil_.W[s] * gamma(p, s);
       mv[1] += stencil_.zy[s] * stencil_.W[s] * gamma(p, s);
     }
-    // Symmetric 2x2 (pseudo-)inverse (003 Sec. 3.2: isolated points).
-    const double tr = A[0] + A[2], det = A[0] * A[2] - A[1] * A[1];
-    const double disc = std::sqrt(std::max(0.0, 0.25 * tr * tr - det));
-    const double l1 = 0.5 * tr + disc, l2 = 0.5 * tr - disc;
-    double v1[2] = {A[1], l1 - A[0]};
-    if (std::hypot(v1[0], v1[1]) < 1e-14 * (std::abs(tr) + 1e-300)) v1[0] = 1, v1[1] = 0;
-    const double nv = std::hypot(v1[0], v1[1]);
-    v1[0] /= nv, v1[1] /= nv;
-    const double tol = kPseudoInverseTolerance * std::max(std::abs(l1), 1e-300);
-    const double i1 = std::abs(l1) > tol ? 1 / l1 : 0, i2 = std::abs(l2) > tol ? 1 / l2 : 0;
-    double M[3] = {i1 * v1[0] * v1[0] + i2 * v1[1] * v1[1], (i1 - i2) * v1[0] * v1[1],
-                   i1 * v1[1] * v1[1] + i2 * v1[0] * v1[0]};
-    if (!corrected_) M[0] = 1, M[1] = 0, M[2] = 1;
+    // The uncorrected theta of 003:(15) is the corrected one with the identity for the tensor's inverse.
+    double M[3] = {1, 0, 1};
+    if (corrected_) shapeInverse(A, M);
     double t = 0.0;
     for (std::size_t s = 0; s < S; ++s) {
       const std::ptrdiff_t q = neighbour_[p * S + s];

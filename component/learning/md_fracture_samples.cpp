@@ -21,14 +21,19 @@ double predictionHorizon(const CoarseGrid& grid, const LearnedModel& model, cons
   return model.kernel.delta * grid.hx / (v.referenceSpacing > 0 ? v.referenceSpacing : model.trainingSpacing);
 }
 
+DamagedLpsOperator predictionOperator(const CoarseGrid& grid, const LearnedModel& model, const PredictionVariant& v) {
+  const double delta = predictionHorizon(grid, model, v);
+  const BernsteinKernel kernel{delta, model.kernel.alpha, model.kernel.D};  // K/m only: the scale does not matter
+  DamagedLpsOperator op(grid, makeLatticeStencil(grid.hx, grid.hy, delta), kernel, model.lambda, model.mu);
+  op.setFreeSurfaceTerms(v.freeSurface);
+  op.setCorrectedDilatation(v.correctedDilatation);
+  return op;
+}
+
 PredictionCase predictionCase(const CoarseGrid& grid, const MdFractureSample& sample, const LearnedModel& model,
                               double s0AtH5, std::size_t substeps, const PredictionVariant& v) {
   const double delta = predictionHorizon(grid, model, v);
-  const BernsteinKernel kernel{delta, model.kernel.alpha, model.kernel.D};  // K/m only: the scale does not matter
-  PredictionCase c{DamagedLpsOperator(grid, makeLatticeStencil(grid.hx, grid.hy, delta), kernel, model.lambda, model.mu),
-                   {}};
-  c.op.setFreeSurfaceTerms(v.freeSurface);
-  c.op.setCorrectedDilatation(v.correctedDilatation);
+  PredictionCase c{predictionOperator(grid, model, v), {}};
   c.setup.s0 = s0AtH5 * sample.s0Scale;
   c.setup.substeps = substeps;
   // The slit just right of x1 = 0: on the fine grid a lattice column lies on x1 = 0.

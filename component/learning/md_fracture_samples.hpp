@@ -56,6 +56,8 @@ struct PredictionVariant {
   // stencil has the training stencil's bonds (003 Sec. 5.4 keeps delta/h fixed too, at delta / kPaperSpacing).
   double referenceSpacing = 0;
 };
+constexpr PredictionVariant kPaperVariant{
+    .layer = 1.0, .freeSurface = true, .correctedDilatation = true, .referenceSpacing = kPaperSpacing};
 
 // One sample's prediction: the operator on the sample's grid and 003's set-up (the slit's bonds broken, the
 // edge layers following the frames for III, s0 = s0AtH5 * s0Scale).
@@ -65,8 +67,10 @@ struct PredictionCase {
 };
 PredictionCase predictionCase(const CoarseGrid& grid, const MdFractureSample& sample, const LearnedModel& model,
                               double s0AtH5, std::size_t substeps, const PredictionVariant& variant = {});
-// The horizon the prediction runs with on `grid`.
+// The horizon the prediction runs with on `grid`, and its operator there.
 double predictionHorizon(const CoarseGrid& grid, const LearnedModel& model, const PredictionVariant& variant = {});
+DamagedLpsOperator predictionOperator(const CoarseGrid& grid, const LearnedModel& model,
+                                      const PredictionVariant& variant = {});
 
 // The model and, per sample of kMdFractureSamples in order, its frames 0..40 and the frame interval [s].
 struct MdFractureData {
