@@ -259,6 +259,26 @@ TEST_CASE("a checkpoint taken between sub-iterations continues the load step bit
   CHECK(loadSteps(other, step + 1, step + 5) == reference);
 }
 
+TEST_CASE("a checkpoint taken while the crack zone holds points hanging by their springs continues bit for bit",
+          "[fracture][checkpoint]") {
+  // h = 8 um, f = 0.2, seed 4: the first zone with such points comes at U_D = 0.24 um (none at h = 16 um).
+  GlassCeramicSpec spec = coarseSpecimen(0.2);
+  spec.grid.nx = 101;
+  spec.grid.ny = 51;
+  spec.seed = 4;
+  GlassCeramicSpecimen g(spec);
+  int step = 0;
+  while (step < 100 && g.solver().zoneHangingPoints() == 0) g.advance(++step * 4e-9);
+  REQUIRE(g.solver().zoneHangingPoints() > 0);
+  const std::vector<std::uint8_t> state = g.saveState();
+  const std::vector<Snapshot> reference = loadSteps(g, step + 1, step + 5);
+
+  GlassCeramicSpecimen other(spec);
+  other.restoreState(state);
+  CHECK(loadSteps(other, step + 1, step + 5) == reference);
+  CHECK(other.solver().zoneHangingPoints() > 0);
+}
+
 TEST_CASE("load steps without breaking reuse one factorization; breaking reuses it",
           "[fracture][solver-reuse]") {
   GlassCeramicSpec spec = coarseSpecimen(0.0);

@@ -45,12 +45,13 @@ void CrackZoneSolver::forRows(std::size_t p, F&& f) const {
   if (dofs_.theta[p] >= 0) f(dofs_.theta[p]);
 }
 
-std::vector<std::int64_t> CrackZoneSolver::zoneUnknowns(const std::vector<std::size_t>& corePoints) const {
+std::vector<std::int64_t> CrackZoneSolver::zoneUnknowns() const {
   std::vector<std::uint8_t> inZone(dofs_.u.size(), 0);
-  for (std::size_t p : corePoints) {
+  for (std::size_t p : core_) {
     inZone[p] = 1;
     for (std::size_t k = nb_.begin(p); k < nb_.end(p); ++k) inZone[nb_.index[k]] = 1;
   }
+  for (std::size_t p : extra_) inZone[p] = 1;
   std::vector<std::int64_t> unknowns;
   for (std::size_t p = 0; p < inZone.size(); ++p)
     if (inZone[p]) forRows(p, [&](std::int64_t r) { unknowns.push_back(r); });
@@ -105,19 +106,24 @@ std::vector<std::size_t> CrackZoneSolver::planCore(const std::vector<double>& pr
   return result;
 }
 
-void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints) {
+void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints,
+                                std::vector<std::size_t> extraPoints) {
   core_ = std::move(corePoints);
+  extra_ = std::move(extraPoints);
   inCore_.assign(dofs_.u.size(), 0);
   for (std::size_t p : core_) inCore_[p] = 1;
-  zone_ = zoneUnknowns(core_);
+  zone_ = zoneUnknowns();
   zoneIndex_.assign(static_cast<std::size_t>(dofs_.size), -1);
   for (std::size_t i = 0; i < zone_.size(); ++i) zoneIndex_[static_cast<std::size_t>(zone_[i])] = static_cast<std::int32_t>(i);
-  factored_ = &A;
   scale_.assign(static_cast<std::size_t>(A.rows), 1.0);
   for (std::int64_t r = 0; r < A.rows; ++r)
     for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
       if (A.col[k] == r && A.value[k] != 0.0) scale_[static_cast<std::size_t>(r)] = 1.0 / std::sqrt(std::abs(A.value[k]));
+  // The last zone's matrix and dense solver go first: MUMPS' factorization sets the run's peak memory.
+  factored_ = {};
+  dense_.release();
   sparse_.factorize(A, scale_, zone_, pivotOrder());
+  factored_ = A.value;
   dense_.reset(sparse_.takeSchurComplement());
   reduced_.resize(zone_.size());
   xZone_.resize(zone_.size());
@@ -159,7 +165,7 @@ bool CrackZoneSolver::rowChange(const CsrMatrix& A, std::int64_t row, std::vecto
   bool changed = false;
   const auto r = static_cast<std::size_t>(row);
   for (auto k = static_cast<std::size_t>(A.rowStart[r]); k < static_cast<std::size_t>(A.rowStart[r + 1]); ++k) {
-    const double d = A.value[k] - factored_->value[k];
+    const double d = A.value[k] - factored_[k];
     changed |= d != 0.0;
     const auto col = static_cast<std::size_t>(A.col[k]);
     const std::int32_t c = zoneIndex_[col];
@@ -174,7 +180,7 @@ bool CrackZoneSolver::rowChange(const CsrMatrix& A, std::int64_t row, std::vecto
 }
 
 std::size_t CrackZoneSolver::update(const CsrMatrix& A, std::span<const std::size_t> points) {
-  require(factored_ != nullptr, "crack zone: update before factorize");
+  require(!factored_.empty(), "crack zone: update before factorize");
   std::vector<std::int32_t> columns;
   std::vector<double> change;
   std::size_t outside = 0;

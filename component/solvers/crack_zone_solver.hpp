@@ -23,8 +23,10 @@ class CrackZoneSolver {
   CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision)
       : nb_(nb), dofs_(dofs), sparse_(precision) {}
 
-  // Factorizes A (kept alive by the caller) with the zone of `corePoints` (ascending) eliminated last.
-  void factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints);
+  // Factorizes A with the zone of `corePoints` (ascending) eliminated last. The unknowns of `extraPoints`
+  // (ascending) join the zone but not the core: points the sparse factors should not see, whose changes still
+  // count as outside the core.
+  void factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints, std::vector<std::size_t> extraPoints = {});
   // A core for the next factorization: the points with priority >= threshold, highest first, each with
   // its neighbours (the rows a break of its bonds changes), while the zone has at most `budget` unknowns.
   std::vector<std::size_t> planCore(const std::vector<double>& priority, double threshold, std::size_t budget) const;
@@ -58,6 +60,7 @@ class CrackZoneSolver {
                              int maxIterations, int restart);
 
   const std::vector<std::size_t>& corePoints() const { return core_; }
+  const std::vector<std::size_t>& extraPoints() const { return extra_; }
   int denseFactorizations() const { return dense_.factorizations(); }
   // Solves with the factors so far (condensation, dense zone solve, expansion), in refinement and GMRES.
   std::int64_t substitutions() const { return substitutions_; }
@@ -66,7 +69,7 @@ class CrackZoneSolver {
  private:
   void solveOnce(std::span<const double> b, std::span<double> x);
   void solveScaled(std::span<const double> b, std::span<double> y);
-  std::vector<std::int64_t> zoneUnknowns(const std::vector<std::size_t>& corePoints) const;
+  std::vector<std::int64_t> zoneUnknowns() const;
   std::vector<std::int32_t> pivotOrder() const;
   // The change (A - factored) of zone row `row` on its columns; false when the row is unchanged.
   bool rowChange(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
@@ -77,13 +80,14 @@ class CrackZoneSolver {
 
   const Neighbours& nb_;
   const DofMap& dofs_;
-  const CsrMatrix* factored_ = nullptr;
+  // The factorized matrix's entries (its pattern is every later matrix's): the changes are measured from them.
+  std::vector<double> factored_;
   // Symmetric diagonal scaling D = |diag A|^-1/2 of the factorized matrix: the u rows are ~1e20 times the
   // theta rows, and MUMPS factorizes D A D (its own scaling is off when a Schur complement is asked for).
   std::vector<double> scale_;
   SchurFactorization sparse_;
   DenseRowUpdateSolver dense_;
-  std::vector<std::size_t> core_;
+  std::vector<std::size_t> core_, extra_;
   std::vector<std::uint8_t> inCore_;
   std::vector<std::int64_t> zone_;       // zone unknowns, ascending
   std::vector<std::int32_t> zoneIndex_;  // per unknown: position in zone_, -1 outside

@@ -33,6 +33,17 @@ void DenseRowUpdateSolver::reset(std::vector<double> S) {
   refactorize();
 }
 
+void DenseRowUpdateSolver::release() {
+  n_ = 0;
+  S_ = {};
+  lu_ = {};
+  W_ = {};
+  pivots_ = {};
+  rows_ = {};
+  updated_ = {};
+  blockEnds_ = {};
+}
+
 void DenseRowUpdateSolver::setRow(std::size_t i, const std::vector<std::int32_t>& columns,
                                   const std::vector<double>& change) {
   Row& row = rows_[i];

@@ -15,6 +15,8 @@ class DenseRowUpdateSolver {
  public:
   // S: column-major n x n; all row changes are relative to it.
   void reset(std::vector<double> S);
+  // Frees the matrix, its LU and the correction until the next reset() (the counts stay).
+  void release();
   std::size_t size() const { return n_; }
 
   // Row i of M is now S[i, columns] + change (columns ascending, fixed per row).

@@ -31,8 +31,8 @@ constexpr int kRescueIterations = 200;
 constexpr double kZoneRatio = 0.1;
 constexpr std::size_t kZoneUnknowns = 3000, kZoneShare = 10;  // at most a tenth of the unknowns
 // A point whose u block has an eigenvalue below this fraction of its largest hangs by its spring in one
-// direction (measured at the fall-backs: 3e-8 to 3e-7, next 1.9e-2); such points come first in a zone.
-constexpr double kNearlyFloatingRatio = 1e-4, kNearlyFloatingPriority = 4.0;
+// direction (measured at the fall-backs: 3e-8 to 3e-7, next 1.9e-2); such points join the zone.
+constexpr double kNearlyFloatingRatio = 1e-4;
 
 // A numeric factorization priced in preconditioned GMRES iterations (one solve with the factors and one
 // product with A each). Measured with UMFPACK+METIS on glass-ceramic matrices of 16k and 62k unknowns
@@ -262,21 +262,36 @@ std::vector<double> QuasiStaticFracture::zonePriority() const {
     const double latest = 2.0 + static_cast<double>(i - first) / static_cast<double>(end - first);
     for (std::size_t p : {nb.owner(k), static_cast<std::size_t>(nb.index[k])}) priority[p] = std::max(priority[p], latest);
   }
-  // Before all, the points that hang by one or a few collinear bonds: across them only their spring holds them,
-  // kSpringRatio of the bond stiffness, which single-precision sparse factors cannot resolve (their refinement
-  // then diverges and the zone falls back to double factors, bench/README.md "Issue 14, session 18"). In the
-  // zone, with their neighbours, they are solved by the dense LU in double.
-  for (std::size_t p = 0; p < priority.size(); ++p)
-    if (stabilized_[p] && nearlyFloating(p)) priority[p] = kNearlyFloatingPriority;
   return priority;
+}
+
+std::vector<std::size_t> QuasiStaticFracture::hangingPoints() const {
+  // Across them only their spring holds them, kSpringRatio of the bond stiffness, which single-precision sparse
+  // factors cannot resolve: their refinement then diverges and the zone falls back to double factors
+  // (bench/README.md, "Issue 14, session 18"). In the zone they are solved by the dense LU in double.
+  // With them, their neighbours, so that the Schur complement's block of such a point is its own entries, without
+  // a single-precision product A_pF A_FF^-1 A_Fp to swamp the small eigenvalue (h = 8 um, f = 0.4, seed 87: the
+  // points alone left one fall-back to double factors, with their neighbours none). Outside the core, they cost
+  // the zone their own unknowns only, not a core's horizon each (session 18's priority made 91 zones there, this
+  // 83).
+  const Neighbours& nb = disc_->neighbours;
+  std::vector<std::uint8_t> mark(stabilized_.size(), 0);
+  for (std::size_t p = 0; p < stabilized_.size(); ++p)
+    if (stabilized_[p] && nearlyFloating(p)) {
+      mark[p] = 1;
+      for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) mark[nb.index[k]] = 1;
+    }
+  std::vector<std::size_t> points;
+  for (std::size_t p = 0; p < mark.size(); ++p)
+    if (mark[p]) points.push_back(p);
+  return points;
 }
 
 void QuasiStaticFracture::factorizeZone(LoadStepReport& report) {
   // The size of the dense Schur complement bounds the zone.
   Stopwatch clock;
-  factoredA_ = system_.A;
   const std::size_t budget = std::min(kZoneUnknowns, static_cast<std::size_t>(disc_->dofs.size) / kZoneShare);
-  zone_->factorize(factoredA_, zone_->planCore(zonePriority(), kZoneRatio, budget));
+  zone_->factorize(system_.A, zone_->planCore(zonePriority(), kZoneRatio, budget), hangingPoints());
   factoredBroken_ = denseBase_ = brokenByLoading_.size();
   hasFactorization_ = factorizationLive_ = matrixFactored_ = true;
   outsideZone_ = false;
@@ -291,10 +306,9 @@ void QuasiStaticFracture::rebuildZone(LoadStepReport& report) {
   // LU and correction rows as the run had them; every row is then checked against the zone as usual.
   Stopwatch clock;
   std::vector<std::uint8_t> stabilized;
-  factoredA_ = assembleFor(intactAt(factoredBroken_), stabilized).A;
-  zone_->factorize(factoredA_, restoredCore_);
-  const CsrMatrix base =
-      denseBase_ == factoredBroken_ ? factoredA_ : assembleFor(intactAt(denseBase_), stabilized).A;
+  const CsrMatrix factored = assembleFor(intactAt(factoredBroken_), stabilized).A;
+  zone_->factorize(factored, restoredCore_, restoredExtra_);
+  const CsrMatrix base = denseBase_ == factoredBroken_ ? factored : assembleFor(intactAt(denseBase_), stabilized).A;
   zone_->restoreDense(base, restoredCorrectionOrder_, restoredCorrectionBlocks_, system_.A);
   factorizationLive_ = true;
   dirty_.resize(disc_->cloud.size());
@@ -399,6 +413,7 @@ std::vector<std::uint8_t> QuasiStaticFracture::saveState() const {
   w.put<std::int32_t>(lastKrylovIterations_);
   w.put<std::uint64_t>(denseBase_);
   w.putArray(zone_ && hasFactorization_ ? zone_->corePoints() : std::vector<std::size_t>{});
+  w.putArray(zone_ && hasFactorization_ ? zone_->extraPoints() : std::vector<std::size_t>{});
   w.putArray(zone_ && hasFactorization_ ? zone_->correctionOrder() : std::vector<std::size_t>{});
   w.putArray(zone_ && hasFactorization_ ? zone_->correctionBlocks() : std::vector<std::size_t>{});
   w.put<std::uint8_t>(zone_ && zone_->precision() == FactorPrecision::Single);
@@ -418,6 +433,7 @@ void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   const auto lastKrylov = r.get<std::int32_t>();
   const auto denseBase = r.get<std::uint64_t>();
   auto core = r.getArray<std::size_t>();
+  auto extra = r.getArray<std::size_t>();
   auto correctionOrder = r.getArray<std::size_t>();
   auto correctionBlocks = r.getArray<std::size_t>();
   const bool singleFactors = r.get<std::uint8_t>() != 0;
@@ -426,8 +442,9 @@ void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   if (zone_) zone_->setPrecision(singleFactors ? FactorPrecision::Single : FactorPrecision::Double);
   if (factoredBroken > broken.size() || denseBase > broken.size())
     throw InvalidInput("serialized FMU state is corrupt: factorization index");
-  for (std::size_t p : core)
-    if (p >= disc_->cloud.size()) throw InvalidInput("serialized FMU state is corrupt: crack zone");
+  for (const auto* points : {&core, &extra})
+    for (std::size_t p : *points)
+      if (p >= disc_->cloud.size()) throw InvalidInput("serialized FMU state is corrupt: crack zone");
   for (std::size_t k : broken)
     if (k >= intact.size()) throw InvalidInput("serialized FMU state is corrupt: broken-bond index");
   load_ = load;
@@ -441,6 +458,7 @@ void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   lastKrylovIterations_ = lastKrylov;
   denseBase_ = static_cast<std::size_t>(denseBase);
   restoredCore_ = std::move(core);
+  restoredExtra_ = std::move(extra);
   restoredCorrectionOrder_ = std::move(correctionOrder);
   restoredCorrectionBlocks_ = std::move(correctionBlocks);
   dirty_.clear();

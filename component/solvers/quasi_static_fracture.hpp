@@ -87,6 +87,8 @@ class QuasiStaticFracture {
   const CsrMatrix& matrix() const { return system_.A; }
   // Entries of the crack zone's last sparse factors (0 for the other drivers).
   std::int64_t zoneFactorEntries() const { return zone_ ? zone_->factorEntries() : 0; }
+  // Points the crack zone in use holds for hanging by their springs (hangingPoints(), with neighbours).
+  std::size_t zoneHangingPoints() const { return zone_ ? zone_->extraPoints().size() : 0; }
   // (u_x, u_y) of every point (the collar included).
   const std::vector<double>& displacement() const { return u_; }
   double load() const { return load_; }
@@ -112,6 +114,8 @@ class QuasiStaticFracture {
   std::vector<double> zonePriority() const;
   // Whether the point hangs by its spring in one direction (its 2 x 2 block of u rows nearly singular).
   bool nearlyFloating(std::size_t point) const;
+  // The points with a broken bond that hang so, and their neighbours (ascending): they join the next zone.
+  std::vector<std::size_t> hangingPoints() const;
   void rebuildZone(LoadStepReport& report);
   void solveInZone(const std::vector<double>& rhs, LoadStepReport& report);
   void solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report);
@@ -132,8 +136,9 @@ class QuasiStaticFracture {
   FactorizationReuse reuse_;
   LpsSystem system_;
   std::vector<std::uint8_t> stabilized_;  // points held by the springs (they have a broken bond)
-  // The matrix the solver factorized (kept alive for it) and the state it belongs to: the bonds intact
-  // now plus brokenByLoading_[factoredBroken_..] (bonds only break, in that recorded order).
+  // The matrix solver_ factorized (kept alive for it; the crack zone keeps its own values) and the state it
+  // belongs to: the bonds intact now plus brokenByLoading_[factoredBroken_..] (bonds only break, in that
+  // recorded order).
   CsrMatrix factoredA_;
   std::size_t factoredBroken_ = 0;
   bool hasFactorization_ = false;  // a factorization of the state above exists (in solver_)
@@ -147,7 +152,7 @@ class QuasiStaticFracture {
   bool outsideZone_ = false;                // rows outside the zone's core changed since it was factorized
   std::size_t denseBase_ = 0;               // brokenByLoading_ size when the zone's dense LU was computed
   // From restoreState, until the zone is rebuilt.
-  std::vector<std::size_t> restoredCore_, restoredCorrectionOrder_, restoredCorrectionBlocks_;
+  std::vector<std::size_t> restoredCore_, restoredExtra_, restoredCorrectionOrder_, restoredCorrectionBlocks_;
   std::vector<double> u_, x_;      // u of all points; last unknown vector (warm start)
   std::vector<std::size_t> brokenByLoading_;
   double load_ = 0;
