@@ -260,47 +260,50 @@ TEST_CASE("single-precision sparse factors: the crack zone's solve is refined in
   CHECK(solves[FactorPrecision::Single] > solves[FactorPrecision::Double]);
 }
 
-TEST_CASE("a point hanging by one bond defeats single-precision zone factors unless it joins the zone with its "
-          "neighbours, and a change of such a point's rows counts as outside the core",
+TEST_CASE("points hanging by one bond, joined to the zone with their neighbours: the single-precision solve reaches "
+          "1e-13, and a change of their rows counts as outside the core",
           "[solver][crack-zone]") {
-  LpsPlate plate;
-  const LpsDiscretization& d = *plate.disc;
-  const Neighbours& nb = d.neighbours;
-  // An interior point far from the breaks, left with one bond (to its first neighbour): across that bond only
-  // the driver's spring holds it, 1e-8 of the bond stiffness (solvers/quasi_static_fracture.cpp).
-  std::size_t p = 0;
-  const auto distance = [&](std::size_t q) { return std::hypot(d.cloud.x[q] - 0.6e-3, d.cloud.y[q] + 0.5e-3); };
-  for (std::size_t q = 0; q < d.cloud.size(); ++q)
-    if (d.dofs.u[q] >= 0 && distance(q) < distance(p)) p = q;
-  REQUIRE(distance(p) < d.cloud.delta);
-  std::vector<std::size_t> neighbours{p};
-  for (std::size_t k = nb.begin(p) + 1; k < nb.end(p); ++k) plate.intact[k] = plate.intact[plate.reverse[k]] = 0;
-  for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) neighbours.push_back(nb.index[k]);
-  std::sort(neighbours.begin(), neighbours.end());
-  LpsSystem s = plate.assemble();
-  const double spring = 1e-8 * 24.0 * plate.mu[p] / (d.cloud.delta * d.cloud.delta);
-  for (std::int64_t row = d.dofs.u[p]; row < d.dofs.u[p] + 2; ++row)
-    for (std::int64_t k = s.A.rowStart[row]; k < s.A.rowStart[row + 1]; ++k)
-      if (s.A.col[k] == row) s.A.value[k] += spring;
+  // Each free point outside the zone in turn. (Left out of the zone, one such point on this small plate does not
+  // defeat the single-precision factors: the fall-backs they caused were measured at h = 8 um, f = 0.4, seed 87,
+  // bench/README.md, "Issue 14, session 18".)
   const std::vector<std::size_t> core = LpsPlate().breakBonds(0, 9);
-  for (std::size_t c : core)  // p lies outside the zone of this core
-    REQUIRE(std::hypot(d.cloud.x[c] - d.cloud.x[p], d.cloud.y[c] - d.cloud.y[p]) > d.cloud.delta);
-  std::vector<double> b(static_cast<std::size_t>(s.A.rows));
-  for (std::size_t i = 0; i < b.size(); ++i) b[i] = 1e6 * std::sin(0.37 * static_cast<double>(i));
+  int candidates = 0;
+  const LpsPlate shape;
+  for (std::size_t p = 0; p < shape.disc->cloud.size(); ++p) {
+    const PointCloud& c = shape.disc->cloud;
+    // A free point outside the zone of this core, left with one bond (to its first neighbour): across that bond
+    // only the driver's spring holds it, 1e-8 of the bond stiffness (solvers/quasi_static_fracture.cpp).
+    if (shape.disc->dofs.u[p] < 0 ||
+        std::any_of(core.begin(), core.end(),
+                    [&](std::size_t q) { return std::hypot(c.x[q] - c.x[p], c.y[q] - c.y[p]) <= c.delta; }))
+      continue;
+    LpsPlate plate;
+    const LpsDiscretization& d = *plate.disc;
+    const Neighbours& nb = d.neighbours;
+    std::vector<std::size_t> neighbours{p};
+    for (std::size_t k = nb.begin(p) + 1; k < nb.end(p); ++k) plate.intact[k] = plate.intact[plate.reverse[k]] = 0;
+    for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) neighbours.push_back(nb.index[k]);
+    std::sort(neighbours.begin(), neighbours.end());
+    LpsSystem s = plate.assemble();
+    const double spring = 1e-8 * 24.0 * plate.mu[p] / (c.delta * c.delta);
+    for (std::int64_t row = d.dofs.u[p]; row < d.dofs.u[p] + 2; ++row)
+      for (std::int64_t k = s.A.rowStart[row]; k < s.A.rowStart[row + 1]; ++k)
+        if (s.A.col[k] == row) s.A.value[k] += spring;
+    std::vector<double> b(static_cast<std::size_t>(s.A.rows));
+    for (std::size_t i = 0; i < b.size(); ++i) b[i] = 1e6 * std::sin(0.37 * static_cast<double>(i));
 
-  CrackZoneSolver apart(d.neighbours, d.dofs, FactorPrecision::Single);
-  apart.factorize(s.A, core);
-  std::vector<double> x(b.size(), 0.0);
-  CHECK_FALSE(apart.solve(s.A, b, x, 1e-13));
+    ++candidates;
+    CrackZoneSolver joined(nb, d.dofs, FactorPrecision::Single);
+    joined.factorize(s.A, core, neighbours);
+    std::vector<double> x(b.size(), 0.0);
+    INFO("point " << p);
+    REQUIRE(joined.solve(s.A, b, x, 1e-13));
+    CHECK(backwardError(s.A, b, x) <= 1e-13);
 
-  CrackZoneSolver joined(d.neighbours, d.dofs, FactorPrecision::Single);
-  joined.factorize(s.A, core, neighbours);
-  std::fill(x.begin(), x.end(), 0.0);
-  REQUIRE(joined.solve(s.A, b, x, 1e-13));
-  CHECK(backwardError(s.A, b, x) <= 1e-13);
-
-  // Its last bond breaks: its rows change, which the zone's dense solver cannot take up (GMRES with the zone
-  // solver does).
-  plate.intact[nb.begin(p)] = plate.intact[plate.reverse[nb.begin(p)]] = 0;
-  CHECK(joined.update(plate.assemble().A, neighbours) > 0);
+    // Its last bond breaks: its rows change, which the zone's dense solver cannot take up (GMRES with the zone
+    // solver does).
+    plate.intact[nb.begin(p)] = plate.intact[plate.reverse[nb.begin(p)]] = 0;
+    CHECK(joined.update(plate.assemble().A, neighbours) > 0);
+  }
+  CHECK(candidates > 20);
 }
