@@ -47,11 +47,11 @@ void CrackZoneSolver::forRows(std::size_t p, F&& f) const {
 
 std::vector<std::int64_t> CrackZoneSolver::zoneUnknowns() const {
   std::vector<std::uint8_t> inZone(dofs_.u.size(), 0);
-  for (std::size_t p : core_) {
-    inZone[p] = 1;
-    for (std::size_t k = nb_.begin(p); k < nb_.end(p); ++k) inZone[nb_.index[k]] = 1;
-  }
-  for (std::size_t p : extra_) inZone[p] = 1;
+  for (const auto* points : {&core_, &extra_})
+    for (std::size_t p : *points) {
+      inZone[p] = 1;
+      for (std::size_t k = nb_.begin(p); k < nb_.end(p); ++k) inZone[nb_.index[k]] = 1;
+    }
   std::vector<std::int64_t> unknowns;
   for (std::size_t p = 0; p < inZone.size(); ++p)
     if (inZone[p]) forRows(p, [&](std::int64_t r) { unknowns.push_back(r); });

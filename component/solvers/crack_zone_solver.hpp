@@ -23,8 +23,8 @@ class CrackZoneSolver {
   CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision)
       : nb_(nb), dofs_(dofs), sparse_(precision) {}
 
-  // Factorizes A with the zone of `corePoints` (ascending) eliminated last. The unknowns of `extraPoints`
-  // (ascending) join the zone but not the core: points the sparse factors should not see, whose changes still
+  // Factorizes A with the zone of `corePoints` (ascending) eliminated last. `extraPoints` (ascending) and their
+  // neighbours join the zone but not the core: points the sparse factors should not see, whose changes still
   // count as outside the core.
   void factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints, std::vector<std::size_t> extraPoints = {});
   // A core for the next factorization: the points with priority >= threshold, highest first, each with

@@ -269,21 +269,14 @@ std::vector<std::size_t> QuasiStaticFracture::hangingPoints() const {
   // Across them only their spring holds them, kSpringRatio of the bond stiffness, which single-precision sparse
   // factors cannot resolve: their refinement then diverges and the zone falls back to double factors
   // (bench/README.md, "Issue 14, session 18"). In the zone they are solved by the dense LU in double.
-  // With them, their neighbours, so that the Schur complement's block of such a point is its own entries, without
-  // a single-precision product A_pF A_FF^-1 A_Fp to swamp the small eigenvalue (h = 8 um, f = 0.4, seed 87: the
-  // points alone left one fall-back to double factors, with their neighbours none). Outside the core, they cost
-  // the zone their own unknowns only, not a core's horizon each (session 18's priority made 91 zones there, this
-  // 83).
-  const Neighbours& nb = disc_->neighbours;
-  std::vector<std::uint8_t> mark(stabilized_.size(), 0);
-  for (std::size_t p = 0; p < stabilized_.size(); ++p)
-    if (stabilized_[p] && nearlyFloating(p)) {
-      mark[p] = 1;
-      for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) mark[nb.index[k]] = 1;
-    }
+  // The zone takes their neighbours with them, so that the Schur complement's block of such a point is its own
+  // entries, without a single-precision product A_pF A_FF^-1 A_Fp to swamp the small eigenvalue (h = 8 um,
+  // f = 0.4, seed 87: the points alone left one fall-back to double factors, with their neighbours none).
+  // Outside the core, each costs the zone one horizon, not a core point's two (session 18's priority made 91
+  // zones there, this 83).
   std::vector<std::size_t> points;
-  for (std::size_t p = 0; p < mark.size(); ++p)
-    if (mark[p]) points.push_back(p);
+  for (std::size_t p = 0; p < stabilized_.size(); ++p)
+    if (stabilized_[p] && nearlyFloating(p)) points.push_back(p);
   return points;
 }
 

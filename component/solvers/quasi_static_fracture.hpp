@@ -87,7 +87,7 @@ class QuasiStaticFracture {
   const CsrMatrix& matrix() const { return system_.A; }
   // Entries of the crack zone's last sparse factors (0 for the other drivers).
   std::int64_t zoneFactorEntries() const { return zone_ ? zone_->factorEntries() : 0; }
-  // Points the crack zone in use holds for hanging by their springs (hangingPoints(), with neighbours).
+  // Points the crack zone in use holds, with their neighbours, for hanging by their springs (hangingPoints()).
   std::size_t zoneHangingPoints() const { return zone_ ? zone_->extraPoints().size() : 0; }
   // (u_x, u_y) of every point (the collar included).
   const std::vector<double>& displacement() const { return u_; }
@@ -114,7 +114,7 @@ class QuasiStaticFracture {
   std::vector<double> zonePriority() const;
   // Whether the point hangs by its spring in one direction (its 2 x 2 block of u rows nearly singular).
   bool nearlyFloating(std::size_t point) const;
-  // The points with a broken bond that hang so, and their neighbours (ascending): they join the next zone.
+  // The points with a broken bond that hang so (ascending): they and their neighbours join the next zone.
   std::vector<std::size_t> hangingPoints() const;
   void rebuildZone(LoadStepReport& report);
   void solveInZone(const std::vector<double>& rhs, LoadStepReport& report);
