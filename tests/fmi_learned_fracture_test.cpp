@@ -57,7 +57,7 @@ TEST_CASE("learnedFracture predicts each MD sample as the library does, bit for 
   }
 }
 
-TEST_CASE("learnedFracture: sample III gives bench/learn_predict's errors; a state continues bit for bit",
+TEST_CASE("learnedFracture: sample III gives bench/learn_predict's errors, and a state continues bit for bit",
           "[abi][learned]") {
   Session s;
   setUp(s, PERISTEP_LEARNED_TRAINING, 20);

@@ -279,7 +279,7 @@ TEST_CASE("a checkpoint taken while the crack zone holds points hanging by their
   CHECK(other.solver().zoneHangingPoints() > 0);
 }
 
-TEST_CASE("load steps without breaking reuse one factorization; breaking reuses it",
+TEST_CASE("load steps without breaking reuse one factorization, and breaking reuses it",
           "[fracture][solver-reuse]") {
   GlassCeramicSpec spec = coarseSpecimen(0.0);
   spec.reuse = GENERATE(FactorizationReuse::CrackZone, FactorizationReuse::StaleAsPreconditioner);

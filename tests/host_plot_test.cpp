@@ -33,7 +33,7 @@ std::vector<StepScalars> dynamicSteps() {
 
 }  // namespace
 
-TEST_CASE("history: outputs that change, grouped by unit; unitless ones alone", "[host][plot]") {
+TEST_CASE("history: outputs that change, grouped by unit, unitless ones alone", "[host][plot]") {
   const auto panels = historyPanels(dynamicLayout(), dynamicSteps());
   REQUIRE(panels.size() == 3);
   CHECK(panels[0] == std::vector<std::size_t>{0, 2});  // the two energies

@@ -72,7 +72,7 @@ DamagedLpsOperator makeOperator(const BernsteinKernel& kernel, bool corrected, b
 
 }  // namespace
 
-TEST_CASE("with K >= 0 and the uncorrected dilatation no mode of the damaged operator grows; with 003's (31) "
+TEST_CASE("with K >= 0 and the uncorrected dilatation no mode of the damaged operator grows, with 003's (31) "
           "some do", "[learning]") {
   const BernsteinKernel positive{kDelta, 0.5, {0.3, 0.1, 0.4, 0.2}};
   const DamagedLpsOperator op = makeOperator(positive, false, false);

@@ -110,11 +110,16 @@ void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> cor
                                 std::vector<std::size_t> extraPoints) {
   core_ = std::move(corePoints);
   extra_ = std::move(extraPoints);
-  inCore_.assign(dofs_.u.size(), 0);
-  for (std::size_t p : core_) inCore_[p] = 1;
   zone_ = zoneUnknowns();
   zoneIndex_.assign(static_cast<std::size_t>(dofs_.size), -1);
   for (std::size_t i = 0; i < zone_.size(); ++i) zoneIndex_[static_cast<std::size_t>(zone_[i])] = static_cast<std::int32_t>(i);
+  // The rows of the extra points outside the core stay with GMRES: when such a point's last bond breaks, only
+  // its spring (1e-8 of a bond) holds it, and with that change in the dense solver neither refinement nor 200
+  // GMRES iterations reached 1e-13 for some points of the test plate (tests/crack_zone_solver_test.cpp).
+  takesUp_.assign(zone_.size(), 1);
+  for (std::size_t p : extra_)
+    if (!std::binary_search(core_.begin(), core_.end(), p))
+      forRows(p, [&](std::int64_t r) { takesUp_[static_cast<std::size_t>(zoneIndex_[static_cast<std::size_t>(r)])] = 0; });
   scale_.assign(static_cast<std::size_t>(A.rows), 1.0);
   for (std::int64_t r = 0; r < A.rows; ++r)
     for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
@@ -158,41 +163,44 @@ std::vector<std::int32_t> CrackZoneSolver::pivotOrder() const {
   return position;
 }
 
-bool CrackZoneSolver::rowChange(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
-                                std::vector<double>& change) const {
+CrackZoneSolver::RowChange CrackZoneSolver::rowChange(const CsrMatrix& A, std::int64_t row,
+                                                     std::vector<std::int32_t>& columns,
+                                                     std::vector<double>& change) const {
   columns.clear();
   change.clear();
-  bool changed = false;
+  RowChange result = RowChange::None;
   const auto r = static_cast<std::size_t>(row);
   for (auto k = static_cast<std::size_t>(A.rowStart[r]); k < static_cast<std::size_t>(A.rowStart[r + 1]); ++k) {
     const double d = A.value[k] - factored_[k];
-    changed |= d != 0.0;
     const auto col = static_cast<std::size_t>(A.col[k]);
     const std::int32_t c = zoneIndex_[col];
     if (c < 0) {
-      if (d != 0.0) return true;  // a change outside the zone's columns: the caller checks the core first
+      if (d != 0.0) result = RowChange::BeyondZone;
       continue;
     }
+    if (d != 0.0 && result == RowChange::None) result = RowChange::InZone;
     columns.push_back(c);
     change.push_back(scale_[r] * d * scale_[col]);
   }
-  return changed;
+  return result;
+}
+
+void CrackZoneSolver::setZoneRow(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
+                                 std::vector<double>& change, std::size_t& beyond) {
+  const RowChange kind = rowChange(A, row, columns, change);
+  const std::int32_t i = zoneIndex_[static_cast<std::size_t>(row)];
+  const bool takesUp = i >= 0 && takesUp_[static_cast<std::size_t>(i)];
+  if (takesUp) dense_.setRow(static_cast<std::size_t>(i), columns, change);
+  if (kind == RowChange::BeyondZone || (kind == RowChange::InZone && !takesUp)) ++beyond;
 }
 
 std::size_t CrackZoneSolver::update(const CsrMatrix& A, std::span<const std::size_t> points) {
   require(!factored_.empty(), "crack zone: update before factorize");
   std::vector<std::int32_t> columns;
   std::vector<double> change;
-  std::size_t outside = 0;
-  for (std::size_t p : points)
-    forRows(p, [&](std::int64_t r) {
-      const bool changed = rowChange(A, r, columns, change);
-      if (!inCore_[p])
-        outside += changed ? 1 : 0;
-      else
-        dense_.setRow(static_cast<std::size_t>(zoneIndex_[static_cast<std::size_t>(r)]), columns, change);
-    });
-  return outside;
+  std::size_t beyond = 0;
+  for (std::size_t p : points) forRows(p, [&](std::int64_t r) { setZoneRow(A, r, columns, change, beyond); });
+  return beyond;
 }
 
 void CrackZoneSolver::restoreDense(const CsrMatrix& base, std::span<const std::size_t> correctionOrder,
@@ -200,13 +208,11 @@ void CrackZoneSolver::restoreDense(const CsrMatrix& base, std::span<const std::s
   std::vector<std::int32_t> columns;
   std::vector<double> change;
   bool baseChanged = false;
-  for (std::size_t p : core_)
-    forRows(p, [&](std::int64_t r) {
-      if (rowChange(base, r, columns, change)) {
-        baseChanged = true;
-        dense_.setRow(static_cast<std::size_t>(zoneIndex_[static_cast<std::size_t>(r)]), columns, change);
-      }
-    });
+  for (std::size_t i = 0; i < zone_.size(); ++i)
+    if (takesUp_[i] && rowChange(base, zone_[i], columns, change) != RowChange::None) {
+      baseChanged = true;
+      dense_.setRow(i, columns, change);
+    }
   if (baseChanged) dense_.refactorize();
   std::vector<std::uint8_t> done(zone_.size(), 0);
   const auto set = [&](std::size_t i) {
@@ -219,11 +225,8 @@ void CrackZoneSolver::restoreDense(const CsrMatrix& base, std::span<const std::s
     set(i);
   }
   dense_.replayCorrection(correctionBlocks);
-  for (std::size_t p : core_)
-    forRows(p, [&](std::int64_t r) {
-      const auto i = static_cast<std::size_t>(zoneIndex_[static_cast<std::size_t>(r)]);
-      if (!done[i]) set(i);
-    });
+  for (std::size_t i = 0; i < zone_.size(); ++i)
+    if (takesUp_[i] && !done[i]) set(i);
 }
 
 void CrackZoneSolver::solveScaled(std::span<const double> b, std::span<double> y) {

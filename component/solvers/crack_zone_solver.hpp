@@ -2,9 +2,10 @@
 // Solves the fracture system A x = b while bonds break, with one sparse factorization per crack zone.
 // The zone is a set of core points whose rows may change (bonds may break there) and the points within
 // delta of them (the columns of those rows). Its unknowns Z are eliminated last: the sparse factors of the
-// rest and the dense Schur complement S come from one MUMPS factorization; a change of the core's rows
-// changes only the Z x Z block, so the solve uses S + (A - A_factored)_ZZ (DenseRowUpdateSolver) and the same
-// sparse factors. A change outside the core needs a new zone and factorization.
+// rest and the dense Schur complement S come from one MUMPS factorization; a change of a zone row within the
+// zone's columns (any change of a core row; of the other zone rows, e.g. the free-surface term of a point
+// near a break, 000:(3.19)) changes only the Z x Z block, so the solve uses S + (A - A_factored)_ZZ
+// (DenseRowUpdateSolver) and the same sparse factors. A change beyond that needs a new zone and factorization.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -24,16 +25,16 @@ class CrackZoneSolver {
       : nb_(nb), dofs_(dofs), sparse_(precision) {}
 
   // Factorizes A with the zone of `corePoints` (ascending) eliminated last. `extraPoints` (ascending) and their
-  // neighbours join the zone but not the core: points the sparse factors should not see, whose changes still
-  // count as outside the core.
+  // neighbours join the zone but not the core: points the sparse factors should not see, whose own rows' changes
+  // still go to GMRES.
   void factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints, std::vector<std::size_t> extraPoints = {});
   // A core for the next factorization: the points with priority >= threshold, highest first, each with
   // its neighbours (the rows a break of its bonds changes), while the zone has at most `budget` unknowns.
   std::vector<std::size_t> planCore(const std::vector<double>& priority, double threshold, std::size_t budget) const;
 
   // The rows of `points` (ascending) in A may differ from the factorized matrix: hand the changes of the
-  // core's rows to the dense zone solver; returns how many changed rows lie outside the core (those the
-  // solver cannot take up: solveIterative() handles them).
+  // zone's rows within its columns to the dense zone solver; returns how many changed rows reach beyond them
+  // (rows outside the zone, or zone rows changed in other columns: solveIterative() handles those).
   std::size_t update(const CsrMatrix& A, std::span<const std::size_t> points);
 
   // x = A^-1 b for the current A (the factorized one plus the updates), refined from the given x against A
@@ -71,9 +72,14 @@ class CrackZoneSolver {
   void solveScaled(std::span<const double> b, std::span<double> y);
   std::vector<std::int64_t> zoneUnknowns() const;
   std::vector<std::int32_t> pivotOrder() const;
-  // The change (A - factored) of zone row `row` on its columns; false when the row is unchanged.
-  bool rowChange(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
-                 std::vector<double>& change) const;
+  enum class RowChange { None, InZone, BeyondZone };
+  // The change (A - factored) of row `row` on the zone's columns, and where the row changed at all.
+  RowChange rowChange(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
+                      std::vector<double>& change) const;
+  // Hands a zone row's change on the zone's columns to the dense solver; counts in `beyond` a change it
+  // cannot take up.
+  void setZoneRow(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
+                  std::vector<double>& change, std::size_t& beyond);
   // Rows of point p that are unknowns.
   template <class F>
   void forRows(std::size_t p, F&& f) const;
@@ -88,9 +94,9 @@ class CrackZoneSolver {
   SchurFactorization sparse_;
   DenseRowUpdateSolver dense_;
   std::vector<std::size_t> core_, extra_;
-  std::vector<std::uint8_t> inCore_;
   std::vector<std::int64_t> zone_;       // zone unknowns, ascending
   std::vector<std::int32_t> zoneIndex_;  // per unknown: position in zone_, -1 outside
+  std::vector<std::uint8_t> takesUp_;    // per zone row: its changes within the zone go to the dense solver
   std::vector<double> reduced_, xZone_;
   std::int64_t substitutions_ = 0;
 };

@@ -320,7 +320,7 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
   dirty_.clear();
   bool solved = !outsideZone_;
   if (outsideZone_) {
-    // Rows outside the core changed (the crack left the zone, or bonds broke elsewhere): GMRES with the
+    // Rows changed beyond the zone (the crack left its core, or bonds broke elsewhere): GMRES with the
     // zone solver while that is cheaper than a new zone.
     solved = iterateWithinBudget(report, [&](int budget) {
       return zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, budget, kKrylovRestart);
@@ -366,6 +366,11 @@ void QuasiStaticFracture::solveZoneExactly(const std::vector<double>& rhs, LoadS
 
 LoadStepReport QuasiStaticFracture::advance(double load) {
   require(std::isfinite(load), "load must be finite");
+  // The last sub-iteration broke nothing, so the matrix is the one x_ solved, and the right-hand side is
+  // linear in the load but for the springs' anchors (kSpringRatio of a bond): the scaled solution leaves only
+  // their residual, which one substitution removes (h = 8 um, f = 0.2: 998 substitutions instead of 1074).
+  if (load_ != 0.0)
+    for (double& v : x_) v *= load / load_;
   load_ = load;
   LoadStepReport report;
   for (;;) {

@@ -149,7 +149,7 @@ class QuasiStaticFracture {
   int factorizationCost_ = 0;      // one factorization priced in GMRES iterations (see the .cpp)
   std::unique_ptr<CrackZoneSolver> zone_;  // CrackZone only
   std::vector<std::size_t> dirty_;          // points whose rows were recomputed since the last solve
-  bool outsideZone_ = false;                // rows outside the zone's core changed since it was factorized
+  bool outsideZone_ = false;                // rows changed beyond the zone since it was factorized
   std::size_t denseBase_ = 0;               // brokenByLoading_ size when the zone's dense LU was computed
   // From restoreState, until the zone is rebuilt.
   std::vector<std::size_t> restoredCore_, restoredExtra_, restoredCorrectionOrder_, restoredCorrectionBlocks_;
