@@ -108,6 +108,7 @@ std::vector<std::size_t> CrackZoneSolver::planCore(const std::vector<double>& pr
 
 void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints,
                                 std::vector<std::size_t> extraPoints) {
+  kept_.clear();  // they were preconditioned by the old factors
   core_ = std::move(corePoints);
   extra_ = std::move(extraPoints);
   zone_ = zoneUnknowns();
@@ -199,7 +200,13 @@ std::size_t CrackZoneSolver::update(const CsrMatrix& A, std::span<const std::siz
   std::vector<std::int32_t> columns;
   std::vector<double> change;
   std::size_t beyond = 0;
-  for (std::size_t p : points) forRows(p, [&](std::int64_t r) { setZoneRow(A, r, columns, change, beyond); });
+  for (std::size_t p : points)
+    forRows(p, [&](std::int64_t r) {
+      setZoneRow(A, r, columns, change, beyond);
+      const auto b = static_cast<std::size_t>(A.rowStart[r]), e = static_cast<std::size_t>(A.rowStart[r + 1]);
+      kept_.refreshRow(static_cast<std::size_t>(r), std::span(A.col).subspan(b, e - b),
+                       std::span(A.value).subspan(b, e - b), scale_);
+    });
   return beyond;
 }
 
@@ -249,7 +256,7 @@ void CrackZoneSolver::solveOnce(std::span<const double> b, std::span<double> x) 
 }
 
 GmresResult CrackZoneSolver::solveIterative(const CsrMatrix& A, std::span<const double> b, std::span<double> x,
-                                            double tol, int maxIterations, int restart) {
+                                            double tol, int maxIterations, int restart, bool recycle) {
   const std::size_t n = b.size();
   std::vector<double> bs(n), y(n), t(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -262,7 +269,7 @@ GmresResult CrackZoneSolver::solveIterative(const CsrMatrix& A, std::span<const 
     for (std::size_t i = 0; i < n; ++i) out[i] *= scale_[i];
   };
   const auto precondition = [&](std::span<const double> in, std::span<double> out) { solveScaled(in, out); };
-  const GmresResult result = gmres(apply, precondition, bs, y, tol, maxIterations, restart);
+  const GmresResult result = gmres(apply, precondition, bs, y, tol, maxIterations, restart, recycle ? &kept_ : nullptr);
   // Single-precision factors of a nearly singular matrix can overflow: x then keeps the last finite solution.
   if (std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); }))
     for (std::size_t i = 0; i < n; ++i) x[i] = scale_[i] * y[i];

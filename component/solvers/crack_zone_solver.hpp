@@ -21,8 +21,9 @@ namespace peristep {
 
 class CrackZoneSolver {
  public:
-  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision)
-      : nb_(nb), dofs_(dofs), sparse_(precision) {}
+  // solveIterative() keeps up to `keptDirections` GMRES directions between solves.
+  CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision, std::size_t keptDirections = 0)
+      : nb_(nb), dofs_(dofs), sparse_(precision), kept_(keptDirections) {}
 
   // Factorizes A with the zone of `corePoints` (ascending) eliminated last. `extraPoints` (ascending) and their
   // neighbours join the zone but not the core: points the sparse factors should not see, whose own rows' changes
@@ -56,9 +57,12 @@ class CrackZoneSolver {
 
   // A x = b when rows outside the core changed too: GMRES on the scaled system D A D, preconditioned by
   // the zone solver (exact up to those rows), from x; stops at relative residual tol. x is left as it was
-  // when the iteration became non-finite.
+  // when the iteration became non-finite. With `recycle`, the directions of earlier such solves since the last
+  // factorize() or forgetDirections() are searched first and this solve's join them.
   GmresResult solveIterative(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol,
-                             int maxIterations, int restart);
+                             int maxIterations, int restart, bool recycle = false);
+  // Drops the kept directions (a restored checkpoint starts without them, so a run drops them where one can start).
+  void forgetDirections() { kept_.clear(); }
 
   const std::vector<std::size_t>& corePoints() const { return core_; }
   const std::vector<std::size_t>& extraPoints() const { return extra_; }
@@ -97,6 +101,7 @@ class CrackZoneSolver {
   std::vector<std::int64_t> zone_;       // zone unknowns, ascending
   std::vector<std::int32_t> zoneIndex_;  // per unknown: position in zone_, -1 outside
   std::vector<std::uint8_t> takesUp_;    // per zone row: its changes within the zone go to the dense solver
+  RecycledDirections kept_;
   std::vector<double> reduced_, xZone_;
   std::int64_t substitutions_ = 0;
 };

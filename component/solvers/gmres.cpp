@@ -1,11 +1,15 @@
 #include "solvers/gmres.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace peristep {
 namespace {
+
+// Sums over rows go in fixed blocks, added in block order: the result does not depend on the number of threads,
+// so a run and its restored checkpoint agree bit for bit.
+constexpr std::size_t kRowBlock = 4096;
 
 double norm(const std::vector<double>& v) {
   double s = 0;
@@ -13,7 +17,101 @@ double norm(const std::vector<double>& v) {
   return std::sqrt(s);
 }
 
+// The sums over rows of addRow(i, partial) (width values each), taken in blocks of rows and added in block order.
+template <class F>
+std::vector<double> sumOverRows(std::size_t n, std::size_t width, F&& addRow) {
+  const std::size_t blocks = (n + kRowBlock - 1) / kRowBlock;
+  std::vector<double> partial(blocks * width, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t blk = 0; blk < blocks; ++blk)
+    for (std::size_t i = blk * kRowBlock; i < std::min(n, (blk + 1) * kRowBlock); ++i) addRow(i, &partial[blk * width]);
+  std::vector<double> sum(width, 0.0);
+  for (std::size_t blk = 0; blk < blocks; ++blk)
+    for (std::size_t a = 0; a < width; ++a) sum[a] += partial[blk * width + a];
+  return sum;
+}
+
+// C(:, 0:k)^T w for row-major C (stride `stride`).
+std::vector<double> transposedProduct(const std::vector<double>& C, std::size_t stride, std::size_t k,
+                                      std::span<const double> w) {
+  return sumOverRows(w.size(), k, [&](std::size_t i, double* p) {
+    const double* row = &C[i * stride];
+    for (std::size_t a = 0; a < k; ++a) p[a] += w[i] * row[a];
+  });
+}
+
+// v += sign * M(:, 0:k) y for row-major M.
+void addProduct(const std::vector<double>& M, std::size_t stride, const std::vector<double>& y, double sign,
+                std::span<double> v) {
+  const std::size_t n = v.size(), k = y.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* row = &M[i * stride];
+    double s = 0;
+    for (std::size_t a = 0; a < k; ++a) s += row[a] * y[a];
+    v[i] += sign * s;
+  }
+}
+
 }  // namespace
+
+void RecycledDirections::clear() {
+  n_ = count_ = pending_ = 0;
+  std::vector<double>().swap(z_);
+  std::vector<double>().swap(c_);
+  std::vector<double>().swap(gram_);
+}
+
+void RecycledDirections::reserve(std::size_t n) {
+  if (n_ == n) return;
+  clear();
+  n_ = n;
+  z_.assign(n * capacity_, 0.0);
+  c_.assign(n * capacity_, 0.0);
+  gram_.assign(capacity_ * capacity_, 0.0);
+}
+
+void RecycledDirections::refreshRow(std::size_t i, std::span<const std::int64_t> columns,
+                                    std::span<const double> values, std::span<const double> scale) {
+  if (count_ == 0) return;
+  std::vector<double> fresh(count_, 0.0);
+  for (std::size_t t = 0; t < columns.size(); ++t) {
+    const auto j = static_cast<std::size_t>(columns[t]);
+    const double a = values[t] * scale[j];
+    const double* zj = &z_[j * capacity_];
+    for (std::size_t k = 0; k < count_; ++k) fresh[k] += a * zj[k];
+  }
+  double* ci = &c_[i * capacity_];
+  for (std::size_t k = 0; k < count_; ++k) fresh[k] *= scale[i];
+  for (std::size_t a = 0; a < count_; ++a)
+    for (std::size_t b = 0; b < count_; ++b) gram_[a * capacity_ + b] += fresh[a] * fresh[b] - ci[a] * ci[b];
+  std::copy(fresh.begin(), fresh.end(), ci);
+}
+
+void RecycledDirections::stage(std::span<const double> z, std::span<const double> c) {
+  const std::size_t k = count_ + pending_;
+  if (k == capacity_) return;
+  for (std::size_t i = 0; i < n_; ++i) {
+    z_[i * capacity_ + k] = z[i];
+    c_[i * capacity_ + k] = c[i];
+  }
+  ++pending_;
+}
+
+void RecycledDirections::commit() {
+  // The Gram matrix's new columns: (C^T C)(a, k) for every a and the new k.
+  const std::size_t first = count_, end = count_ + pending_;
+  pending_ = 0;
+  if (end == first) return;
+  const std::vector<double> sums = sumOverRows(n_, end * (end - first), [&](std::size_t i, double* p) {
+    const double* row = &c_[i * capacity_];
+    for (std::size_t k = first; k < end; ++k)
+      for (std::size_t a = 0; a < end; ++a) p[(k - first) * end + a] += row[a] * row[k];
+  });
+  for (std::size_t k = first; k < end; ++k)
+    for (std::size_t a = 0; a < end; ++a) gram_[a * capacity_ + k] = gram_[k * capacity_ + a] = sums[(k - first) * end + a];
+  count_ = end;
+}
 
 GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b, std::span<double> x, double tol,
                   int maxIterations, int restart) {
@@ -23,9 +121,8 @@ GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b
 }
 
 GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::span<const double> b,
-                  std::span<double> x, double tol, int maxIterations, int restart) {
-  const std::size_t n = b.size();
-  const auto m = static_cast<std::size_t>(restart);
+                  std::span<double> x, double tol, int maxIterations, int restart, RecycledDirections* recycled) {
+  const std::size_t n = b.size(), m = static_cast<std::size_t>(restart);
   GmresResult result;
   const double bnorm = std::sqrt([&] {
     double s = 0;
@@ -37,18 +134,61 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
     result.converged = true;
     return result;
   }
-  std::vector<std::vector<double>> V(m + 1, std::vector<double>(n)), Z(m, std::vector<double>(n));
-  std::vector<std::vector<double>> H(m + 1, std::vector<double>(m, 0.0));
-  std::vector<double> cs(m), sn(m), g(m + 1), w(n), r(n);
+  RecycledDirections none(0);
+  RecycledDirections& kept = recycled ? *recycled : none;
+  kept.reserve(n);
+  const std::size_t k = kept.count_, stride = kept.capacity_;
 
-  while (result.iterations < maxIterations) {
+  // Least squares on the kept C through its Gram matrix, with directions the others repeat (eigenvalues below
+  // 1e-12 of the largest) left out: coeff = G^+ C^T w, and w loses its part in range(C).
+  Eigen::MatrixXd basis;
+  Eigen::VectorXd inverse;
+  if (k > 0) {
+    Eigen::MatrixXd G(k, k);
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t c = 0; c < k; ++c) G(a, c) = kept.gram_[a * stride + c];
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
+    basis = eig.eigenvectors();
+    inverse = eig.eigenvalues();
+    const double largest = inverse.maxCoeff();
+    for (Eigen::Index a = 0; a < inverse.size(); ++a) inverse(a) = inverse(a) > 1e-12 * largest ? 1.0 / inverse(a) : 0.0;
+  }
+  const auto project = [&](std::vector<double>& w, std::vector<double>& coeff) {
+    const std::vector<double> t = transposedProduct(kept.c_, stride, k, w);
+    const Eigen::VectorXd c = basis * inverse.cwiseProduct(basis.transpose() * Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(k)));
+    coeff.assign(c.data(), c.data() + k);
+    addProduct(kept.c_, stride, coeff, -1.0, w);
+  };
+
+  std::vector<std::vector<double>> V(m + 1, std::vector<double>(n)), Z(m, std::vector<double>(n));
+  std::vector<std::vector<double>> H(m + 1, std::vector<double>(m, 0.0)), B(m);
+  std::vector<double> cs(m), sn(m), g(m + 1), w(n), r(n), coeff;
+  const auto residual = [&] {
     apply(x, r);
     for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
-    const double beta = norm(r);
+    return norm(r);
+  };
+
+  while (result.iterations < maxIterations) {
+    double beta = residual();
     result.relativeResidual = beta / bnorm;
     if (result.relativeResidual <= tol) {
       result.converged = true;
-      return result;
+      break;
+    }
+    if (k > 0) {
+      project(r, coeff);
+      addProduct(kept.z_, stride, coeff, 1.0, x);
+      beta = norm(r);
+      // The kept directions alone may do: then check the true residual.
+      if (beta / bnorm <= tol) {
+        beta = residual();
+        result.relativeResidual = beta / bnorm;
+        if (result.relativeResidual <= tol) {
+          result.converged = true;
+          break;
+        }
+      }
     }
     for (std::size_t i = 0; i < n; ++i) V[0][i] = r[i] / beta;
     std::fill(g.begin(), g.end(), 0.0);
@@ -58,19 +198,22 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
       ++result.iterations;
       precondition(V[j], Z[j]);  // right preconditioning: z_j = M^{-1} v_j
       apply(Z[j], w);
+      kept.stage(Z[j], w);
+      // A (z_j - Z_kept B_j) = w - C B_j: the Krylov vectors stay orthogonal to range(C).
+      if (k > 0) project(w, B[j]);
       for (std::size_t i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         double h = 0;
-        for (std::size_t k = 0; k < n; ++k) h += w[k] * V[i][k];
+        for (std::size_t q = 0; q < n; ++q) h += w[q] * V[i][q];
         H[i][j] = h;
-        for (std::size_t k = 0; k < n; ++k) w[k] -= h * V[i][k];
+        for (std::size_t q = 0; q < n; ++q) w[q] -= h * V[i][q];
       }
       H[j + 1][j] = norm(w);
       if (H[j + 1][j] > 0)
-        for (std::size_t k = 0; k < n; ++k) V[j + 1][k] = w[k] / H[j + 1][j];
-      for (std::size_t i = 0; i < j; ++i) {  // apply the earlier Givens rotations
-        const double t = cs[i] * H[i][j] + sn[i] * H[i + 1][j];
+        for (std::size_t q = 0; q < n; ++q) V[j + 1][q] = w[q] / H[j + 1][j];
+      for (std::size_t i = 0; i < j; ++i) {  // the earlier Givens rotations
+        const double h = cs[i] * H[i][j] + sn[i] * H[i + 1][j];
         H[i + 1][j] = -sn[i] * H[i][j] + cs[i] * H[i + 1][j];
-        H[i][j] = t;
+        H[i][j] = h;
       }
       const double d = std::hypot(H[j][j], H[j + 1][j]);
       cs[j] = d > 0 ? H[j][j] / d : 1.0;
@@ -84,20 +227,27 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
         break;
       }
     }
-    // x += Z y with H y = g (upper triangular, size j)
+    // x += sum_j y_j (z_j - Z_kept B_j) with H y = g (upper triangular, size j)
     std::vector<double> y(j);
     for (std::size_t i = j; i-- > 0;) {
       double s = g[i];
-      for (std::size_t k = i + 1; k < j; ++k) s -= H[i][k] * y[k];
+      for (std::size_t q = i + 1; q < j; ++q) s -= H[i][q] * y[q];
       y[i] = s / H[i][i];
     }
     for (std::size_t i = 0; i < j; ++i)
-      for (std::size_t k = 0; k < n; ++k) x[k] += y[i] * Z[i][k];
+      for (std::size_t q = 0; q < n; ++q) x[q] += y[i] * Z[i][q];
+    if (k > 0) {
+      std::vector<double> d(k, 0.0);
+      for (std::size_t i = 0; i < j; ++i)
+        for (std::size_t a = 0; a < k; ++a) d[a] += B[i][a] * y[i];
+      addProduct(kept.z_, stride, d, -1.0, x);
+    }
   }
-  apply(x, r);
-  for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
-  result.relativeResidual = norm(r) / bnorm;
-  result.converged = result.relativeResidual <= tol;
+  if (!result.converged) {
+    result.relativeResidual = residual() / bnorm;
+    result.converged = result.relativeResidual <= tol;
+  }
+  kept.commit();
   return result;
 }
 
