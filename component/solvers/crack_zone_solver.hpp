@@ -62,7 +62,7 @@ class CrackZoneSolver {
   GmresResult solveIterative(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol,
                              int maxIterations, int restart, bool recycle = false);
   // Drops the kept directions (a restored checkpoint starts without them, so a run drops them where one can start).
-  void forgetDirections() { kept_.clear(); }
+  void forgetDirections() { kept_.forget(); }
 
   const std::vector<std::size_t>& corePoints() const { return core_; }
   const std::vector<std::size_t>& extraPoints() const { return extra_; }

@@ -11,7 +11,7 @@ namespace {
 // so a run and its restored checkpoint agree bit for bit.
 constexpr std::size_t kRowBlock = 4096;
 
-double norm(const std::vector<double>& v) {
+double norm(std::span<const double> v) {
   double s = 0;
   for (double a : v) s += a * a;
   return std::sqrt(s);
@@ -54,6 +54,8 @@ void addProduct(const std::vector<double>& M, std::size_t stride, const std::vec
 }
 
 }  // namespace
+
+void RecycledDirections::forget() { count_ = pending_ = 0; }
 
 void RecycledDirections::clear() {
   n_ = count_ = pending_ = 0;
@@ -124,11 +126,7 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
                   std::span<double> x, double tol, int maxIterations, int restart, RecycledDirections* recycled) {
   const std::size_t n = b.size(), m = static_cast<std::size_t>(restart);
   GmresResult result;
-  const double bnorm = std::sqrt([&] {
-    double s = 0;
-    for (double a : b) s += a * a;
-    return s;
-  }());
+  const double bnorm = norm(b);
   if (bnorm == 0) {
     std::fill(x.begin(), x.end(), 0.0);
     result.converged = true;

@@ -30,8 +30,11 @@ class RecycledDirections {
   explicit RecycledDirections(std::size_t capacity) : capacity_(capacity) {}
 
   std::size_t size() const { return count_; }
-  // Forgets every direction and frees their memory (a new preconditioner, or the start of a load step).
+  // Forgets every direction and frees their memory (a new preconditioner: the sparse factorization that
+  // follows sets the run's peak memory).
   void clear();
+  // Forgets every direction and keeps the memory for the next ones.
+  void forget();
   // Row i of the operator D A D changed: with its entries of A (columns, values) and the scaling D.
   void refreshRow(std::size_t i, std::span<const std::int64_t> columns, std::span<const double> values,
                   std::span<const double> scale);
