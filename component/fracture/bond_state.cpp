@@ -92,13 +92,14 @@ std::vector<double> stretchRatios(const BondState& s, const PointCloud& c, const
   return ratio;
 }
 
-std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, const Neighbours& nb,
-                                            const std::vector<double>& u) {
+OverstretchVerdict findOverstretched(const BondState& s, const PointCloud& c, const Neighbours& nb,
+                                     const std::vector<double>& u, double uError) {
   // Threads check contiguous point ranges and the lists are joined in thread order: the result (and the
   // breaking order recorded from it) is the same for any number of threads.
   std::vector<std::vector<std::size_t>> found(static_cast<std::size_t>(omp_get_max_threads()));
   ParallelErrors errors;  // push_back allocates
-#pragma omp parallel num_threads(static_cast<int>(found.size()))
+  bool certain = true;
+#pragma omp parallel num_threads(static_cast<int>(found.size())) reduction(&& : certain)
   {
     std::vector<std::size_t>& mine = found[static_cast<std::size_t>(omp_get_thread_num())];
 #pragma omp for schedule(static)
@@ -106,14 +107,31 @@ std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, c
       const auto p = static_cast<std::size_t>(ps);
       for (std::size_t k = nb.begin(p); k < nb.end(p); ++k) {
         if (nb.index[k] < p || !s.intact[k] || !std::isfinite(s.criticalStretch[k])) continue;
-        if (bondStretch(c, nb, u, p, k) > s.criticalStretch[k]) mine.push_back(k);
+        const double stretch = bondStretch(c, nb, u, p, k);
+        if (stretch > s.criticalStretch[k]) mine.push_back(k);
+        if (uError > 0) {  // a change of u_q - u_p by at most 2 uError moves the stretch by at most 2 uError / |xi|
+          const std::uint32_t q = nb.index[k];
+          const double length = std::hypot(c.x[q] - c.x[p], c.y[q] - c.y[p]);
+          if (std::abs(stretch - s.criticalStretch[k]) <= 2.0 * uError / length) certain = false;
+        }
       }
     });
   }
   errors.rethrow();
-  std::vector<std::size_t> fresh;
-  for (const auto& f : found) fresh.insert(fresh.end(), f.begin(), f.end());
-  for (std::size_t k : fresh) s.intact[k] = s.intact[s.reverse[k]] = 0;  // 000:(2.24): never heal
+  OverstretchVerdict v;
+  v.certain = certain;
+  for (const auto& f : found) v.bonds.insert(v.bonds.end(), f.begin(), f.end());
+  return v;
+}
+
+void breakBonds(BondState& s, std::span<const std::size_t> bonds) {
+  for (std::size_t k : bonds) s.intact[k] = s.intact[s.reverse[k]] = 0;  // 000:(2.24): never heal
+}
+
+std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& c, const Neighbours& nb,
+                                            const std::vector<double>& u) {
+  std::vector<std::size_t> fresh = findOverstretched(s, c, nb, u, 0.0).bonds;
+  breakBonds(s, fresh);
   return fresh;
 }
 

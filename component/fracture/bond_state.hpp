@@ -3,6 +3,7 @@
 // pre-cracks, damage 000:(3.23). Only scenes that can break allocate it.
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geometry/neighbours.hpp"
@@ -35,6 +36,17 @@ std::size_t breakCrossing(BondState& s, const PointCloud& cloud, const Neighbour
 // newly broken pairs (one entry per pair, from the lower point index). u holds (u_x, u_y) of every point.
 std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& cloud, const Neighbours& nb,
                                             const std::vector<double>& u);
+
+// The bonds breakOverstretched would break (not breaking them), and whether that verdict holds for every u'
+// with max |u' - u| <= uError: no intact breakable bond has |s - s0| <= 2 uError / |x_j - x_i|.
+struct OverstretchVerdict {
+  std::vector<std::size_t> bonds;
+  bool certain = true;
+};
+OverstretchVerdict findOverstretched(const BondState& s, const PointCloud& cloud, const Neighbours& nb,
+                                     const std::vector<double>& u, double uError);
+// Breaks the pairs at these CSR positions (both directions).
+void breakBonds(BondState& s, std::span<const std::size_t> bonds);
 
 // Per point, the largest stretch / s0 over its intact breakable bonds (0 if none): how close it is to
 // breaking; the fracture driver places its crack zone by it.

@@ -27,6 +27,12 @@ constexpr int kKrylovRestart = 40;
 // GMRES directions kept for a zone's later solves. Each Arnoldi step reads them twice: with all of a zone's (up to
 // its price, 50 at h = 2 um) the full size ran 2% slower than without, with 16 4% faster (bench/README.md).
 constexpr std::size_t kKeptDirections = 16;
+// A sub-iteration may decide its breaks on a solution refined only to this backward error, when no bond's stretch
+// lies within the error bound of its s0; the bound is this multiple of the last correction's largest change (the
+// error after it was at most 5e-6 of it at h = 8 um, f = 0.8; bench/README.md, "Issue 14, session 22").
+constexpr double kSettleTolerance = 1e-6;
+constexpr double kErrorPerChange = 1e-3;
+constexpr double kSettleKrylov = 1e-6;  // GMRES' relative residual
 // GMRES iterations allowed where refinement with single-precision zone factors diverged.
 constexpr int kRescueIterations = 200;
 // The crack zone: points whose bonds reach this fraction of their critical stretch, the closest first,
@@ -162,24 +168,38 @@ void QuasiStaticFracture::rebuildFactorization(LoadStepReport& report) {
   report.factorizationSeconds += clock.seconds();
 }
 
-void QuasiStaticFracture::solveCurrent(LoadStepReport& report) {
+void QuasiStaticFracture::solveCurrent(LoadStepReport& report, bool settle) {
   const PointCloud& c = disc_->cloud;
   const DofMap& d = disc_->dofs;
-  std::vector<double> g(unitCollar_.size()), rhs(x_.size());
+  std::vector<double> g(unitCollar_.size());
   for (std::size_t k = 0; k < g.size(); ++k) g[k] = load_ * unitCollar_[k];
-  system_.B.multiply(g, rhs);
-  for (double& v : rhs) v = -v;
+  rhs_.assign(x_.size(), 0.0);
+  system_.B.multiply(g, rhs_);
+  for (double& v : rhs_) v = -v;
   for (std::size_t p : c.domain)
     if (stabilized_[p])
       for (int a = 0; a < 2; ++a)
-        rhs[static_cast<std::size_t>(d.u[p] + a)] +=
+        rhs_[static_cast<std::size_t>(d.u[p] + a)] +=
             springStiffness(material_.mu[p], c.delta) * u_[2 * p + static_cast<std::size_t>(a)];
 
+  settledChange_ = 0;
   if (reuse_ == FactorizationReuse::CrackZone) {
-    solveInZone(rhs, report);
+    solveInZone(rhs_, report, settle);
   } else {
-    solveWithFactorization(rhs, report);
+    solveWithFactorization(rhs_, report);
   }
+  takeSolution();
+}
+
+void QuasiStaticFracture::finishSolve(LoadStepReport& report) {
+  settledChange_ = 0;
+  solveInZone(rhs_, report, false);
+  takeSolution();
+}
+
+void QuasiStaticFracture::takeSolution() {
+  const PointCloud& c = disc_->cloud;
+  const DofMap& d = disc_->dofs;
   for (double v : x_)
     if (!std::isfinite(v)) throw SolverFailure("fracture solve produced a non-finite displacement");
   for (std::size_t p = 0; p < c.size(); ++p) {
@@ -187,8 +207,8 @@ void QuasiStaticFracture::solveCurrent(LoadStepReport& report) {
       u_[2 * p] = x_[static_cast<std::size_t>(d.u[p])];
       u_[2 * p + 1] = x_[static_cast<std::size_t>(d.u[p]) + 1];
     } else {
-      u_[2 * p] = c.isVoid(p) ? 0.0 : g[2 * p];
-      u_[2 * p + 1] = c.isVoid(p) ? 0.0 : g[2 * p + 1];
+      u_[2 * p] = c.isVoid(p) ? 0.0 : load_ * unitCollar_[2 * p];
+      u_[2 * p + 1] = c.isVoid(p) ? 0.0 : load_ * unitCollar_[2 * p + 1];
     }
   }
 }
@@ -313,7 +333,7 @@ void QuasiStaticFracture::rebuildZone(LoadStepReport& report) {
   report.factorizationSeconds += clock.seconds();
 }
 
-void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepReport& report) {
+void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepReport& report, bool settle) {
   if (hasFactorization_ && !factorizationLive_) rebuildZone(report);
   if (!hasFactorization_) factorizeZone(report);
   Stopwatch clock;
@@ -327,20 +347,21 @@ void QuasiStaticFracture::solveInZone(const std::vector<double>& rhs, LoadStepRe
     // zone solver while that is cheaper than a new zone, searching the directions of the zone's earlier
     // GMRES solves first (h = 2 um, f = 0.2: 42 instead of 44 zones, 1806 instead of 1885 GMRES iterations).
     solved = iterateWithinBudget(report, [&](int budget) {
-      return zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, budget, kKrylovRestart, true);
+      return zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, budget, kKrylovRestart, true,
+                                   settle ? kSettleKrylov : 0.0, &settledChange_);
     });
   }
   report.solveSeconds += clock.lap();
   if (!solved) factorizeZone(report);
   clock.lap();
-  if (!outsideZone_) solveZoneExactly(rhs, report);
+  if (!outsideZone_) solveZoneExactly(rhs, report, settle);
   if (zone_->denseFactorizations() != dense) denseBase_ = brokenByLoading_.size();
   report.denseFactorizations += zone_->denseFactorizations() - dense;
   report.substitutions += zone_->substitutions() - substitutions;
   report.solveSeconds += clock.lap();
 }
 
-void QuasiStaticFracture::solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report) {
+void QuasiStaticFracture::solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report, bool settle) {
   // Single-precision factors refined in double diverge once the matrix is too ill-conditioned (a fragment
   // held only by the springs; h = 8 um, f = 0.4, seed 87 at U_D = 0.828 um). GMRES preconditioned by the
   // same factors is tried first (refinement by GMRES: it converges where plain refinement does not, and
@@ -352,7 +373,8 @@ void QuasiStaticFracture::solveZoneExactly(const std::vector<double>& rhs, LoadS
     return;
   }
   const std::vector<double> start = x_;  // where a fall-back starts again
-  if (zone_->solve(system_.A, rhs, x_, kKrylovTolerance)) return;
+  if (zone_->solve(system_.A, rhs, x_, kKrylovTolerance, settle ? kSettleTolerance : 0.0, &settledChange_)) return;
+  settledChange_ = 0;
   x_ = start;
   const GmresResult rescue =
       zone_->solveIterative(system_.A, rhs, x_, kKrylovTolerance, kRescueIterations, kKrylovRestart);
@@ -381,11 +403,22 @@ LoadStepReport QuasiStaticFracture::advance(double load) {
   load_ = load;
   LoadStepReport report;
   for (;;) {
-    solveCurrent(report);
+    solveCurrent(report, true);
     ++report.subIterations;
     Stopwatch clock;
-    const std::vector<std::size_t> fresh = breakOverstretched(bonds_, disc_->cloud, disc_->neighbours, u_);
-    report.bondCheckSeconds += clock.seconds();
+    OverstretchVerdict verdict =
+        findOverstretched(bonds_, disc_->cloud, disc_->neighbours, u_, kErrorPerChange * settledChange_);
+    report.bondCheckSeconds += clock.lap();
+    // A settled solution decides the breaks only when no bond is near its s0; the last sub-iteration of a load
+    // step ends refined to tolerance (the reported forces, the next load step's start and checkpoints).
+    if (settledChange_ > 0 && (!verdict.certain || verdict.bonds.empty())) {
+      finishSolve(report);
+      clock.lap();
+      if (!verdict.certain) verdict = findOverstretched(bonds_, disc_->cloud, disc_->neighbours, u_, 0.0);
+      report.bondCheckSeconds += clock.lap();
+    }
+    const std::vector<std::size_t>& fresh = verdict.bonds;
+    breakBonds(bonds_, fresh);
     if (fresh.empty()) break;
     brokenByLoading_.insert(brokenByLoading_.end(), fresh.begin(), fresh.end());
     report.newlyBroken += fresh.size();

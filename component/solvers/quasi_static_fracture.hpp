@@ -117,8 +117,9 @@ class QuasiStaticFracture {
   // The points with a broken bond that hang so (ascending): they and their neighbours join the next zone.
   std::vector<std::size_t> hangingPoints() const;
   void rebuildZone(LoadStepReport& report);
-  void solveInZone(const std::vector<double>& rhs, LoadStepReport& report);
-  void solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report);
+  // With `settle`, the zone's refinement may stop early (CrackZoneSolver::solve), leaving settledChange_ > 0.
+  void solveInZone(const std::vector<double>& rhs, LoadStepReport& report, bool settle);
+  void solveZoneExactly(const std::vector<double>& rhs, LoadStepReport& report, bool settle);
   void solveWithFactorization(const std::vector<double>& rhs, LoadStepReport& report);
   // Ski rental: GMRES with an older factorization while the iterations spent on it stay below the price of
   // a new one (so at most twice the better choice is paid); false when over budget or not converged.
@@ -126,7 +127,11 @@ class QuasiStaticFracture {
   std::vector<std::uint8_t> intactAt(std::size_t broken) const;
   void factorizeCurrent(LoadStepReport& report);
   void rebuildFactorization(LoadStepReport& report);
-  void solveCurrent(LoadStepReport& report);
+  void solveCurrent(LoadStepReport& report, bool settle = false);
+  // Refines a settled solution to tolerance.
+  void finishSolve(LoadStepReport& report);
+  // u_ from x_ and the prescribed displacements.
+  void takeSolution();
 
   std::shared_ptr<const LpsDiscretization> disc_;
   FractureMaterial material_;
@@ -154,6 +159,8 @@ class QuasiStaticFracture {
   // From restoreState, until the zone is rebuilt.
   std::vector<std::size_t> restoredCore_, restoredExtra_, restoredCorrectionOrder_, restoredCorrectionBlocks_;
   std::vector<double> u_, x_;      // u of all points; last unknown vector (warm start)
+  std::vector<double> rhs_;        // of the last solve
+  double settledChange_ = 0;       // > 0: x_ settled short of tolerance, its last correction's largest change
   std::vector<std::size_t> brokenByLoading_;
   double load_ = 0;
   std::function<void(const LoadStepReport&)> subIterationHook_;
