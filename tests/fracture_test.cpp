@@ -34,6 +34,15 @@ SmallCloud smallCloud() {
   return s;
 }
 
+// The CSR position of the bond from p to its right neighbour at distance h.
+std::size_t rightNeighbourBond(const SmallCloud& s, std::size_t p) {
+  std::size_t k = s.nb.begin(p);
+  while (!(s.cloud.y[s.nb.index[k]] == s.cloud.y[p] && s.cloud.x[s.nb.index[k]] > s.cloud.x[p] &&
+           s.cloud.x[s.nb.index[k]] - s.cloud.x[p] < 1.5 * s.cloud.h))
+    ++k;
+  return k;
+}
+
 }  // namespace
 
 TEST_CASE("critical stretch follows 000:(2.25)", "[fracture]") {
@@ -52,10 +61,7 @@ TEST_CASE("a bond breaks exactly when its stretch passes s0 and never heals", "[
   // The bond to the right neighbour at distance h: moving that neighbour along +x stretches no other
   // bond as much, so exactly this bond is at its limit.
   const std::size_t p = s.cloud.domain[12];
-  std::size_t k = s.nb.begin(p);
-  while (!(s.cloud.y[s.nb.index[k]] == s.cloud.y[p] && s.cloud.x[s.nb.index[k]] > s.cloud.x[p] &&
-           s.cloud.x[s.nb.index[k]] - s.cloud.x[p] < 1.5 * s.cloud.h))
-    ++k;
+  const std::size_t k = rightNeighbourBond(s, p);
   const std::size_t q = s.nb.index[k];
   const double s0 = b.criticalStretch[k];
   const double zx = s.cloud.x[q] - s.cloud.x[p], zy = s.cloud.y[q] - s.cloud.y[p];
@@ -75,6 +81,27 @@ TEST_CASE("a bond breaks exactly when its stretch passes s0 and never heals", "[
   stretchTo(0.0);  // unloaded: still broken
   breakOverstretched(b, s.cloud, s.nb, u);
   CHECK(!b.intact[k]);
+}
+
+TEST_CASE("a verdict on an approximate u is certain only while no bond lies within the error bound of s0", "[fracture]") {
+  const SmallCloud s = smallCloud();
+  const BondState b = makeBondState(s.cloud, s.nb, s.lambda, s.mu, s.G);
+  const std::size_t p = s.cloud.domain[12];
+  const std::size_t k = rightNeighbourBond(s, p);
+  const std::size_t q = s.nb.index[k];
+  const double s0 = b.criticalStretch[k], length = s.cloud.x[q] - s.cloud.x[p];
+  std::vector<double> u(2 * s.cloud.size(), 0.0);
+  u[2 * q] = length * s0 * 1.01;  // 1% over s0
+  // An error of u within uError moves the stretch by at most 2 uError / length: 0.01 s0 at this uError.
+  const double atMargin = 0.005 * s0 * length;
+  const OverstretchVerdict clear = findOverstretched(b, s.cloud, s.nb, u, 0.9 * atMargin);
+  CHECK(clear.certain);
+  CHECK(std::find(clear.bonds.begin(), clear.bonds.end(), std::min(k, b.reverse[k])) != clear.bonds.end());
+  const OverstretchVerdict near = findOverstretched(b, s.cloud, s.nb, u, 1.1 * atMargin);
+  CHECK(!near.certain);
+  CHECK(near.bonds == clear.bonds);
+  CHECK(b.intact[k]);  // a verdict breaks nothing
+  CHECK(findOverstretched(b, s.cloud, s.nb, u, 0.0).certain);
 }
 
 TEST_CASE("damage is zero before any break and in [0, 1] always", "[fracture]") {

@@ -44,7 +44,7 @@ class CrackZoneSolver {
   // condition number passes ~1e7 (a fragment held only by the driver's springs) do not converge.
   // With settleTol > tol it also stops, returning true, once the backward error is at most settleTol, and sets
   // *lastChange to the largest change of a displacement unknown in the last correction (0 when it reached tol):
-  // the error left is a small multiple of it (single-precision factors contract the error ~1e-6 per correction).
+  // the error left is a small fraction of it (single-precision factors contract the error ~1e-6 per correction).
   bool solve(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol, double settleTol = 0,
              double* lastChange = nullptr);
 
@@ -62,12 +62,9 @@ class CrackZoneSolver {
   // A x = b when rows outside the core changed too: GMRES on the scaled system D A D, preconditioned by
   // the zone solver (exact up to those rows), from x; stops at relative residual tol. x is left as it was
   // when the iteration became non-finite. With `recycle`, the directions of earlier such solves since the last
-  // factorize() or forgetDirections() are searched first and this solve's join them. With settleTol and
-  // lastChange it may settle as gmres() does; *lastChange is then the largest change of a displacement unknown
-  // in the last iteration (else 0).
+  // factorize() or forgetDirections() are searched first and this solve's join them.
   GmresResult solveIterative(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol,
-                             int maxIterations, int restart, bool recycle = false, double settleTol = 0,
-                             double* lastChange = nullptr);
+                             int maxIterations, int restart, bool recycle = false);
   // Drops the kept directions (a restored checkpoint starts without them, so a run drops them where one can start).
   void forgetDirections() { kept_.forget(); }
 
@@ -79,8 +76,6 @@ class CrackZoneSolver {
   std::int64_t factorEntries() const { return sparse_.factorEntries(); }
 
  private:
-  // max |dx_i| (times scale_i if given) over the displacement unknowns.
-  double largestDisplacementChange(std::span<const double> dx, std::span<const double> scale) const;
   void solveOnce(std::span<const double> b, std::span<double> x);
   void solveScaled(std::span<const double> b, std::span<double> y);
   std::vector<std::int64_t> zoneUnknowns() const;

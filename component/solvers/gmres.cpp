@@ -123,9 +123,7 @@ GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b
 }
 
 GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::span<const double> b,
-                  std::span<double> x, double tol, int maxIterations, int restart, RecycledDirections* recycled,
-                  double settleTol, std::vector<double>* lastStep) {
-  constexpr double kSettleCut = 1e-3;
+                  std::span<double> x, double tol, int maxIterations, int restart, RecycledDirections* recycled) {
   const std::size_t n = b.size(), m = static_cast<std::size_t>(restart);
   GmresResult result;
   const double bnorm = norm(b);
@@ -194,7 +192,6 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
     std::fill(g.begin(), g.end(), 0.0);
     g[0] = beta;
     std::size_t j = 0;
-    double before = beta;  // residual before this iteration
     for (; j < m && result.iterations < maxIterations; ++j) {
       ++result.iterations;
       precondition(V[j], Z[j]);  // right preconditioning: z_j = M^{-1} v_j
@@ -223,51 +220,25 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
       H[j + 1][j] = 0;
       g[j + 1] = -sn[j] * g[j];
       g[j] = cs[j] * g[j];
-      const double after = std::abs(g[j + 1]);
-      if (after / bnorm <= tol) {
+      if (std::abs(g[j + 1]) / bnorm <= tol) {
         ++j;
         break;
       }
-      if (lastStep && after / bnorm <= settleTol && after <= kSettleCut * before) {
-        result.settled = true;
-        result.relativeResidual = after / bnorm;
-        ++j;
-        break;
-      }
-      before = after;
     }
     // x += sum_j y_j (z_j - Z_kept B_j) with H y = g (upper triangular, size j)
-    const auto solveTriangle = [&](std::size_t size) {
-      std::vector<double> y(size);
-      for (std::size_t i = size; i-- > 0;) {
-        double s = g[i];
-        for (std::size_t q = i + 1; q < size; ++q) s -= H[i][q] * y[q];
-        y[i] = s / H[i][i];
-      }
-      return y;
-    };
-    const auto addCombination = [&](const std::vector<double>& y, std::span<double> out) {
-      for (std::size_t i = 0; i < y.size(); ++i)
-        for (std::size_t q = 0; q < n; ++q) out[q] += y[i] * Z[i][q];
-      if (k > 0) {
-        std::vector<double> d(k, 0.0);
-        for (std::size_t i = 0; i < y.size(); ++i)
-          for (std::size_t a = 0; a < k; ++a) d[a] += B[i][a] * y[i];
-        addProduct(kept.z_, stride, d, -1.0, out);
-      }
-    };
-    std::vector<double> y = solveTriangle(j);
-    addCombination(y, x);
-    if (result.settled) {
-      // The iterate of one iteration fewer solves the leading triangle with the same g (a rotation changes only
-      // the rows it acts on).
-      const std::vector<double> shorter = solveTriangle(j - 1);
-      for (std::size_t i = 0; i + 1 < j; ++i) y[i] -= shorter[i];
-      lastStep->assign(n, 0.0);
-      addCombination(y, *lastStep);
-      result.converged = true;
-      kept.commit();
-      return result;
+    std::vector<double> y(j);
+    for (std::size_t i = j; i-- > 0;) {
+      double s = g[i];
+      for (std::size_t q = i + 1; q < j; ++q) s -= H[i][q] * y[q];
+      y[i] = s / H[i][i];
+    }
+    for (std::size_t i = 0; i < j; ++i)
+      for (std::size_t q = 0; q < n; ++q) x[q] += y[i] * Z[i][q];
+    if (k > 0) {
+      std::vector<double> d(k, 0.0);
+      for (std::size_t i = 0; i < j; ++i)
+        for (std::size_t a = 0; a < k; ++a) d[a] += B[i][a] * y[i];
+      addProduct(kept.z_, stride, d, -1.0, x);
     }
   }
   if (!result.converged) {

@@ -19,7 +19,6 @@ struct GmresResult {
   bool converged = false;
   int iterations = 0;
   double relativeResidual = 0;
-  bool settled = false;  // stopped at settleTol (see gmres): converged counts it as converged
 };
 
 using VectorMap = std::function<void(std::span<const double>, std::span<double>)>;
@@ -42,7 +41,7 @@ class RecycledDirections {
 
  private:
   friend GmresResult gmres(const VectorMap&, const VectorMap&, std::span<const double>, std::span<double>, double,
-                           int, int, RecycledDirections*, double, std::vector<double>*);
+                           int, int, RecycledDirections*);
   std::size_t capacity_, n_ = 0, count_ = 0, pending_ = 0;
   std::vector<double> z_, c_;  // row-major: entry (i, k) at i * capacity_ + k
   std::vector<double> gram_;   // capacity_ x capacity_, C^T C of the first count_ columns
@@ -54,12 +53,9 @@ class RecycledDirections {
 // Solves A x = b starting from x; stops at ||b - A x|| <= tol ||b|| or after maxIterations. With `kept`, it first
 // takes the best combination of the kept directions (least squares on C), keeps every Krylov vector orthogonal
 // to range(C), and hands its own directions to `kept` when it returns; without, it is plain GMRES.
-// With settleTol > tol and `lastStep`, it also stops once the residual is at most settleTol ||b|| and the last
-// iteration cut it by a factor 1e3 or more; *lastStep then holds what that iteration added to x (its error
-// bound's scale).
 GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::span<const double> b,
                   std::span<double> x, double tol, int maxIterations, int restart = 30,
-                  RecycledDirections* kept = nullptr, double settleTol = 0, std::vector<double>* lastStep = nullptr);
+                  RecycledDirections* kept = nullptr);
 
 // The same with a matrix and a solver as the preconditioner.
 GmresResult gmres(const CsrMatrix& A, LinearSolver& preconditioner, std::span<const double> b, std::span<double> x,
