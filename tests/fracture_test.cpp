@@ -92,8 +92,8 @@ TEST_CASE("a verdict on an approximate u is certain only while no bond lies with
   const double s0 = b.criticalStretch[k], length = s.cloud.x[q] - s.cloud.x[p];
   std::vector<double> u(2 * s.cloud.size(), 0.0);
   u[2 * q] = length * s0 * 1.01;  // 1% over s0
-  // An error of u within uError moves the stretch by at most 2 uError / length: 0.01 s0 at this uError.
-  const double atMargin = 0.005 * s0 * length;
+  // An error of u within uError per component moves the stretch by at most 2 sqrt(2) uError / length: 0.01 s0 here.
+  const double atMargin = 0.01 * s0 * length / (2.0 * std::numbers::sqrt2);
   const OverstretchVerdict clear = findOverstretched(b, s.cloud, s.nb, u, 0.9 * atMargin);
   CHECK(clear.certain);
   CHECK(std::find(clear.bonds.begin(), clear.bonds.end(), std::min(k, b.reverse[k])) != clear.bonds.end());

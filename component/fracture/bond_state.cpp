@@ -109,10 +109,10 @@ OverstretchVerdict findOverstretched(const BondState& s, const PointCloud& c, co
         if (nb.index[k] < p || !s.intact[k] || !std::isfinite(s.criticalStretch[k])) continue;
         const double stretch = bondStretch(c, nb, u, p, k);
         if (stretch > s.criticalStretch[k]) mine.push_back(k);
-        if (uError > 0) {  // a change of u_q - u_p by at most 2 uError moves the stretch by at most 2 uError / |xi|
+        if (uError > 0) {  // |u_q - u_p| changes by at most 2 sqrt(2) uError, the stretch by that over |xi|
           const std::uint32_t q = nb.index[k];
           const double length = std::hypot(c.x[q] - c.x[p], c.y[q] - c.y[p]);
-          if (std::abs(stretch - s.criticalStretch[k]) <= 2.0 * uError / length) certain = false;
+          if (std::abs(stretch - s.criticalStretch[k]) <= 2.0 * std::numbers::sqrt2 * uError / length) certain = false;
         }
       }
     });

@@ -38,7 +38,7 @@ std::vector<std::size_t> breakOverstretched(BondState& s, const PointCloud& clou
                                             const std::vector<double>& u);
 
 // The bonds breakOverstretched would break (not breaking them), and whether that verdict holds for every u'
-// with max |u' - u| <= uError: no intact breakable bond has |s - s0| <= 2 uError / |x_j - x_i|.
+// within uError of u in each component: no intact breakable bond has |s - s0| <= 2 sqrt(2) uError / |x_j - x_i|.
 struct OverstretchVerdict {
   std::vector<std::size_t> bonds;
   bool certain = true;

@@ -168,7 +168,7 @@ void QuasiStaticFracture::rebuildFactorization(LoadStepReport& report) {
   report.factorizationSeconds += clock.seconds();
 }
 
-void QuasiStaticFracture::solveCurrent(LoadStepReport& report, bool settle) {
+void QuasiStaticFracture::solveCurrent(LoadStepReport& report) {
   const PointCloud& c = disc_->cloud;
   const DofMap& d = disc_->dofs;
   std::vector<double> g(unitCollar_.size());
@@ -184,7 +184,7 @@ void QuasiStaticFracture::solveCurrent(LoadStepReport& report, bool settle) {
 
   settledChange_ = 0;
   if (reuse_ == FactorizationReuse::CrackZone) {
-    solveInZone(rhs_, report, settle);
+    solveInZone(rhs_, report, true);
   } else {
     solveWithFactorization(rhs_, report);
   }
@@ -402,7 +402,7 @@ LoadStepReport QuasiStaticFracture::advance(double load) {
   load_ = load;
   LoadStepReport report;
   for (;;) {
-    solveCurrent(report, true);
+    solveCurrent(report);
     ++report.subIterations;
     Stopwatch clock;
     OverstretchVerdict verdict =

@@ -127,7 +127,8 @@ class QuasiStaticFracture {
   std::vector<std::uint8_t> intactAt(std::size_t broken) const;
   void factorizeCurrent(LoadStepReport& report);
   void rebuildFactorization(LoadStepReport& report);
-  void solveCurrent(LoadStepReport& report, bool settle = false);
+  // The zone's refinement may settle (CrackZoneSolver::solve): then settledChange_ > 0.
+  void solveCurrent(LoadStepReport& report);
   // Refines a settled solution to tolerance.
   void finishSolve(LoadStepReport& report);
   // u_ from x_ and the prescribed displacements.
