@@ -158,7 +158,9 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
     addProduct(kept.c_, stride, coeff, -1.0, w);
   };
 
-  std::vector<std::vector<double>> V(m + 1, std::vector<double>(n)), Z(m, std::vector<double>(n));
+  // The Krylov vectors are allocated as the iterations reach them: a solve here takes a few iterations of the
+  // 40 a restart allows, and 81 vectors of 266k unknowns (172 MB) would raise the run's peak memory.
+  std::vector<std::vector<double>> V(1, std::vector<double>(n)), Z;
   std::vector<std::vector<double>> H(m + 1, std::vector<double>(m, 0.0)), B(m);
   std::vector<double> cs(m), sn(m), g(m + 1), w(n), r(n), coeff;
   const auto residual = [&] {
@@ -194,6 +196,10 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
     std::size_t j = 0;
     for (; j < m && result.iterations < maxIterations; ++j) {
       ++result.iterations;
+      if (Z.size() == j) {
+        Z.emplace_back(n);
+        V.emplace_back(n);
+      }
       precondition(V[j], Z[j]);  // right preconditioning: z_j = M^{-1} v_j
       apply(Z[j], w);
       kept.stage(Z[j], w);
