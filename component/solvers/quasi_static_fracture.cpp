@@ -273,13 +273,14 @@ bool QuasiStaticFracture::nearlyFloating(std::size_t p) const {
 }
 
 std::vector<double> QuasiStaticFracture::zonePriority() const {
-  // First the points of the bonds broken since the last zone, the latest first: where the zone missed,
-  // damage goes on (the crack tip, a second crack, a corner). At h = 8 um this cut the factorizations
-  // from 28 to 23 (f = 0.2) and from 77 to 59 (f = 0.8) against the ratio alone (bench/README.md).
-  // Then the points closest to breaking under the last solution, ranked by stretch / s0 (< 1).
+  // First the points of the bonds the last sub-iteration broke: where the zone missed, damage goes on (the
+  // crack tip, a second crack, a corner). Then the points closest to breaking under the last solution, ranked
+  // by stretch / s0 (< 1). Against all bonds broken since the last zone (a running crack's path behind its
+  // tip, where little breaks again) this cut the zones from 73 to 66 at h = 4 um, f = 0.8 (bench/README.md,
+  // "Issue 14, session 25").
   std::vector<double> priority = stretchRatios(bonds_, disc_->cloud, disc_->neighbours, u_);
   const Neighbours& nb = disc_->neighbours;
-  const std::size_t first = factoredBroken_, end = brokenByLoading_.size();
+  const std::size_t first = std::max(factoredBroken_, latestBreaks_), end = brokenByLoading_.size();
   for (std::size_t i = first; i < end; ++i) {
     const std::size_t k = brokenByLoading_[i];
     const double latest = 2.0 + static_cast<double>(i - first) / static_cast<double>(end - first);
@@ -419,6 +420,7 @@ LoadStepReport QuasiStaticFracture::advance(double load) {
     const std::vector<std::size_t>& fresh = verdict.bonds;
     breakBonds(bonds_, fresh);
     if (fresh.empty()) break;
+    latestBreaks_ = brokenByLoading_.size();
     brokenByLoading_.insert(brokenByLoading_.end(), fresh.begin(), fresh.end());
     report.newlyBroken += fresh.size();
     // The reference assembles afresh, so that it checks the row updates of the other drivers.
@@ -444,6 +446,7 @@ std::vector<std::uint8_t> QuasiStaticFracture::saveState() const {
   w.putArray(x_);
   w.putArray(bonds_.intact);
   w.putArray(brokenByLoading_);
+  w.put<std::uint64_t>(latestBreaks_);
   w.put<std::uint8_t>(hasFactorization_);
   w.put<std::uint64_t>(factoredBroken_);
   w.put<std::int32_t>(staleIterations_);
@@ -464,6 +467,7 @@ void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   auto x = r.getArray<double>(x_.size());
   auto intact = r.getArray<std::uint8_t>(bonds_.intact.size());
   auto broken = r.getArray<std::size_t>();
+  const auto latestBreaks = r.get<std::uint64_t>();
   const bool hasFactorization = r.get<std::uint8_t>() != 0;
   const auto factoredBroken = r.get<std::uint64_t>();
   const auto stale = r.get<std::int32_t>();
@@ -477,7 +481,7 @@ void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   r.expectEnd();
   // The state may have been taken after a fall-back to double factors (or before one that came later).
   if (zone_) zone_->setPrecision(singleFactors ? FactorPrecision::Single : FactorPrecision::Double);
-  if (factoredBroken > broken.size() || denseBase > broken.size())
+  if (factoredBroken > broken.size() || denseBase > broken.size() || latestBreaks > broken.size())
     throw InvalidInput("serialized FMU state is corrupt: factorization index");
   for (const auto* points : {&core, &extra})
     for (std::size_t p : *points)
@@ -489,6 +493,7 @@ void QuasiStaticFracture::restoreState(std::span<const std::uint8_t> bytes) {
   x_ = std::move(x);
   bonds_.intact = std::move(intact);
   brokenByLoading_ = std::move(broken);
+  latestBreaks_ = static_cast<std::size_t>(latestBreaks);
   hasFactorization_ = hasFactorization;
   factoredBroken_ = static_cast<std::size_t>(factoredBroken);
   staleIterations_ = stale;

@@ -163,6 +163,7 @@ class QuasiStaticFracture {
   std::vector<double> rhs_;        // of the last solve
   double settledChange_ = 0;       // > 0: x_ settled short of tolerance, its last correction's largest change
   std::vector<std::size_t> brokenByLoading_;
+  std::size_t latestBreaks_ = 0;   // brokenByLoading_[latestBreaks_..]: the last sub-iteration's breaks
   double load_ = 0;
   std::function<void(const LoadStepReport&)> subIterationHook_;
 };
