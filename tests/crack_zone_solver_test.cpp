@@ -25,6 +25,14 @@ using namespace peristep;
 
 namespace {
 
+// Entries uniform in [-1, 1] plus `diagonal` on the diagonal: regular, and it stays so under the tests' row changes.
+Eigen::MatrixXd diagonallyDominant(int n, double diagonal, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::MatrixXd M(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) M(i, j) = u(rng) + (i == j ? diagonal : 0.0);
+  return M;
+}
 
 }  // namespace
 
@@ -83,10 +91,8 @@ TEST_CASE("row updates through Woodbury solve with the changed matrix, also past
           "[solver][crack-zone]") {
   const int n = 120;
   std::mt19937_64 rng(3);
+  const Eigen::MatrixXd M = diagonallyDominant(n, 30.0, rng);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::MatrixXd M(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) M(i, j) = u(rng) + (i == j ? 30.0 : 0.0);
   DenseRowUpdateSolver solver;
   solver.reset(std::vector<double>(M.data(), M.data() + n * n));
   std::vector<double> changes(static_cast<std::size_t>(n) * n, 0.0);  // the current change of every row
@@ -120,6 +126,41 @@ TEST_CASE("row updates through Woodbury solve with the changed matrix, also past
     REQUIRE((x - exact).norm() <= 1e-12 * exact.norm());
   }
   CHECK(solver.factorizations() > 1);  // the correction grew past its limit and a fresh LU took over
+}
+
+TEST_CASE("the capacitance LU serves the solves of one set of row changes and is renewed when a corrected row "
+          "changes again", "[solver][crack-zone]") {
+  const int n = 60;
+  std::mt19937_64 rng(5);
+  const Eigen::MatrixXd M = diagonallyDominant(n, 20.0, rng);
+  DenseRowUpdateSolver solver;
+  solver.reset(std::vector<double>(M.data(), M.data() + n * n));
+  Eigen::MatrixXd current = M;
+  const auto setRow = [&](int row, double scale) {
+    const std::vector<std::int32_t> cols{0, row, n - 1};
+    std::vector<double> change;
+    for (std::int32_t c : cols) change.push_back(scale * (1.0 + 0.1 * c));
+    current.row(row) = M.row(row);
+    for (std::size_t k = 0; k < cols.size(); ++k) current(row, cols[k]) += change[k];
+    solver.setRow(static_cast<std::size_t>(row), cols, change);
+  };
+  const auto solveAndCheck = [&](double phase) {
+    Eigen::VectorXd r(n), x(n);
+    for (int i = 0; i < n; ++i) r(i) = std::sin(0.7 * i + phase);
+    solver.solve(std::span<const double>(r.data(), n), std::span<double>(x.data(), n));
+    const Eigen::VectorXd exact = current.lu().solve(r);
+    REQUIRE((x - exact).norm() <= 1e-12 * exact.norm());
+  };
+  setRow(3, 5.0);
+  setRow(17, -4.0);
+  solveAndCheck(0.0);
+  solveAndCheck(1.0);  // the same rows: the LU of I + D W is reused
+  setRow(3, -7.0);     // a corrected row changes again, the number of rows stays
+  REQUIRE(solver.correctedRows() == 2);
+  solveAndCheck(2.0);
+  setRow(17, -4.0 * (1.0 + 1e-9));  // a change in the last bits is a change too
+  solveAndCheck(3.0);
+  CHECK(solver.factorizations() == 1);
 }
 
 // An LPS plate (21 x 17 points, delta = 3h, moduli varying in space) and the bonds crossing a short inclined

@@ -44,6 +44,7 @@ class DenseRowUpdateSolver {
     std::int64_t slot = -1;                // column of W, -1 while the row equals M0's
   };
   void extendCorrection(std::size_t k);
+  void factorizeCapacitance(std::size_t k);
   void luSolve(const std::vector<double>& lu, const std::vector<int>& pivots, std::size_t n, double* b, int nrhs) const;
 
   std::size_t n_ = 0;
@@ -53,6 +54,11 @@ class DenseRowUpdateSolver {
   std::vector<std::size_t> updated_;  // rows with a W column, in order of their slots
   std::vector<std::size_t> blockEnds_;
   std::vector<double> W_;             // n x updated_.size(), column-major
+  // LU of the capacitance matrix I + D W for the first capacitanceRows_ corrected rows: it depends on the
+  // rows' changes only, so every solve until the next setRow() that changes a corrected row reuses it.
+  std::vector<double> capacitance_;
+  std::vector<int> capacitancePivots_;
+  std::size_t capacitanceRows_ = 0;
   int factorizations_ = 0;
 };
 
