@@ -40,7 +40,7 @@
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
 #include "damage_picture.hpp"
-#include "idle_threads.hpp"
+#include "process_settings.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
 #include "scenes/glass_ceramic.hpp"
@@ -125,8 +125,8 @@ Progress readCheckpoint(const std::string& path, const RunOptions& options, Glas
 }  // namespace
 
 int main(int argc, char** argv) try {
-  // libgomp and OpenBLAS are loaded with this program: set their idle policy, then start it afresh.
-  if (peristep::preferSleepingIdleThreads()) execv("/proc/self/exe", argv);
+  // libgomp, OpenBLAS and glibc read these at start: set them, then start afresh.
+  if (peristep::preferProcessSettings()) execv("/proc/self/exe", argv);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines appear as they come, also in a log file
   double hUm = 8, fraction = 0.2, maxLoadUm = 1.0, stepUm = 0.004, checkpointMinutes = 10;
   std::uint64_t seed = 1;

@@ -1,16 +1,18 @@
 // peristep: runs the PeriStep FMU through its C ABI only (see commands/ for what each subcommand does).
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 
 #include <iostream>
 
 #include "commands/commands.hpp"
 #include "host_errors.hpp"
-#include "idle_threads.hpp"
+#include "process_settings.hpp"
 
 using namespace peristep::host;
 
 int main(int argc, char** argv) {
-  peristep::preferSleepingIdleThreads();  // before the FMU (and with it libgomp and OpenBLAS) is loaded
+  // Before the FMU (and with it libgomp and OpenBLAS) is loaded; glibc reads its tunables at start only.
+  if (peristep::preferProcessSettings()) execv("/proc/self/exe", argv);
   CLI::App app{"peristep: drive the PeriStep peridynamic fracture component (an FMI 3.0 co-simulation FMU)"};
   app.set_version_flag("--version", PERISTEP_VERSION);
   app.require_subcommand(1);

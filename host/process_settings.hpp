@@ -1,0 +1,31 @@
+#pragma once
+// Settings that libraries read from the environment only when they are loaded or the process starts:
+// - Idle worker threads of OpenMP (libgomp) and OpenBLAS spin before they sleep: libgomp for up to 300k
+//   iterations after each parallel region, OpenBLAS for 2^28 cycles (with sched_yield) after each BLAS call.
+//   The fracture drivers alternate short OpenMP loops with MUMPS and BLAS calls, so on two cores the spinning
+//   threads take the CPU from the working ones (bench/README.md, "Issue 14, session 8": h = 8 um, f = 0.2,
+//   user + system time 57 -> 37 s).
+// - glibc's malloc on transparent huge pages (glibc >= 2.35): the crack zone allocates arrays of tens to
+//   hundreds of MB afresh at every factorization (its own and MUMPS'), and with 4 KiB pages the first touch
+//   of each page is a fault (h = 4 um, f = 0.8: 4.4 million faults; with huge pages 0.26 million and 14% less
+//   wall time; bench/README.md, "Issue 14, session 31"). The component itself leaves the importer's allocator
+//   alone; the programs that own the process ask for it.
+// The caller starts itself afresh when this set anything (glibc reads its tunables at start).
+#include <cstdlib>
+#include <utility>
+
+namespace peristep {
+
+// Sets the variables the user did not set; true if it set any.
+inline bool preferProcessSettings() {
+  bool set = false;
+  for (const auto& [name, value] : {std::pair{"OMP_WAIT_POLICY", "passive"}, std::pair{"OPENBLAS_THREAD_TIMEOUT", "4"},
+                                    std::pair{"GLIBC_TUNABLES", "glibc.malloc.hugetlb=1"}})
+    if (!std::getenv(name)) {
+      setenv(name, value, 0);
+      set = true;
+    }
+  return set;
+}
+
+}  // namespace peristep
