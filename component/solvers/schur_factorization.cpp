@@ -63,7 +63,7 @@ struct Workspace {
 };
 
 // Square transposes in tiles that stay in cache (element by element, the strided side misses the cache and
-// the TLB at every entry: 16 ms for a zone of 1400 unknowns at h = 8 um, 3 ms in tiles).
+// the TLB at every entry: about 19 ms for a zone of 1400 unknowns at h = 8 um, 3 ms in tiles).
 constexpr std::size_t kTile = 64;
 
 template <class Real>
