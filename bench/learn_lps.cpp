@@ -3,12 +3,15 @@
 // chosen by the validation residual; solvability (003:(37)) and the explicit stability limit of each kernel.
 //   learn_lps [--data data/learning/graphene_md.h5] [--deltas 10,15,20,25] [--orders 1,2,3,4] [--margin 1]
 //             [--increments] [--s0-set fracture_train|fracture_test] [--nonnegative-kernel] [--paper-operator]
-// then s0 by a 1-D minimization on frames 5-20 of the fracture training sample (003 Algorithm 1 (v)).
+// then s0 by a 1-D minimization on frames 5-20 of the fracture training sample (003 Algorithm 1 (v)): of the
+// equation residual 003:(42), and of the prediction's displacement error (the project's s0).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "bench_cli.hpp"
@@ -19,6 +22,7 @@
 #include "learning/learned_lps_force_model.hpp"
 #include "learning/md_fracture_samples.hpp"
 #include "learning/lps_symbol.hpp"
+#include "learning/prediction_window_loss.hpp"
 #include "solvers/dynamic_problem.hpp"
 #include "solvers/stability_limit.hpp"
 
@@ -118,9 +122,7 @@ int main(int argc, char** argv) {
     const auto t2 = std::chrono::steady_clock::now();
     const CoarseDataSet& frac = file.sets.at(s0Set);
     FractureFrames frames = fractureFrames(frac);
-    if (increments)
-      for (std::size_t f = frames.u.size(); f-- > 0;)
-        for (std::size_t k = 0; k < frames.u[f].size(); ++k) frames.u[f][k] -= frames.u[0][k];
+    if (increments) subtractFrame0(frames);
     const LearnedModel model{f.kernel, f.lambda, f.mu, train.lattice.hx};
     // The operator the prediction runs (learning/md_fracture_samples.hpp), or 003's.
     const PredictionVariant variant = paperOperator ? kPaperVariant : PredictionVariant{};
@@ -131,13 +133,29 @@ int main(int argc, char** argv) {
     double smax = 0;  // largest finite stretch
     for (const double s : fres.maxStretch(lastFrame))
       if (std::isfinite(s)) smax = std::max(smax, s);
-    const CriticalStretchFit s0 = fitCriticalStretch(fres, 0.005, 0.4, 80);
-    std::printf("\ncritical stretch (frames %zu-%zu, %zu points %.1f delta inside the sheet): s0 = %.4f "
+    const CriticalStretchFit s0 = fitCriticalStretch([&](double s) { return fres.loss(s); }, 0.005, 0.4, 80);
+    std::printf("\ncritical stretch by the equation residual 003:(42) (frames %zu-%zu, %zu points %.1f delta inside "
+                "the sheet): s0 = %.4f "
                 "(%d loss evaluations, %.1f s); largest bond stretch in the data by frame %zu: %.3f\n",
                 firstFrame, lastFrame, fres.rows(), margin, s0.s0, s0.evaluations, seconds(t2), lastFrame, smax);
     std::printf("  loss / loss(s0 = 0.4):");
     for (std::size_t i = 0; i < s0.scanS0.size(); i += scanStride)
       std::printf(" %.3f:%.3f", s0.scanS0[i], s0.scanLoss[i] / s0.scanLoss.back());
+    std::printf("\n");
+
+    // The project's s0 step: the prediction's displacement error on the same frames (003:(42) names no s0 on
+    // the MD samples, bench/README.md "Critical stretch").
+    const auto t3 = std::chrono::steady_clock::now();
+    const auto sample = std::find_if(kMdFractureSamples.begin(), kMdFractureSamples.end(),
+                                     [&](const MdFractureSample& m) { return s0Set == m.set; });
+    if (sample == kMdFractureSamples.end()) throw std::runtime_error("--s0-set: not a fracture sample: " + s0Set);
+    const CriticalStretchFit byPrediction = learnCriticalStretch(frames, *sample, model, firstFrame, lastFrame, 8, variant);
+    std::printf("critical stretch by the prediction error (restarted at frame %zu, frames %zu-%zu): s0 = %.4f, 95%% "
+                "interval [%.4f, %.4f] (%d predictions, %.1f s)\n  loss / loss(s0 = 0.5):",
+                firstFrame, firstFrame + 1, lastFrame, byPrediction.s0, byPrediction.lower, byPrediction.upper,
+                byPrediction.evaluations, seconds(t3));
+    for (std::size_t i = 0; i < byPrediction.scanS0.size(); i += scanStride / 2)
+      std::printf(" %.3f:%.3f", byPrediction.scanS0[i], byPrediction.scanLoss[i] / byPrediction.scanLoss.back());
     std::printf("\n003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
   } catch (const std::exception& e) {
     std::cerr << "learn_lps: " << e.what() << "\n";

@@ -1,7 +1,8 @@
 // Prediction step of 003 (Sec. 5.2-5.4): the learned LPS model (kernel and moduli fitted here on the static
 // sets; by default the project's model, K >= 0 with delta = 10 A, P = 2, the choice of learn_lps
-// --nonnegative-kernel) runs the coarse-grained fracture samples forward from frame 0 and is compared with the
-// MD frames: relative displacement and damage errors over 40 frames.
+// --nonnegative-kernel; s0 learned on frames 5-20 of sample III as learn_lps does, unless --s0 gives it) runs
+// the coarse-grained fracture samples forward from frame 0 and is compared with the MD frames: relative
+// displacement and damage errors over 40 frames.
 //   learn_predict [--data data/learning/graphene_md.h5] [--s0 0.11] [--substeps 8] [--layer 1]
 //                 [--scan 0.05,0.08,0.11,0.15,0.2] [--increments] [--diagnose] [--per-frame]
 //                 [--signed-kernel --delta 20 --order 4] [--paper-horizon] [--corrected-dilatation] [--free-surface]
@@ -24,6 +25,7 @@
 #include "learning/kernel_fit.hpp"
 #include "learning/lps_symbol.hpp"
 #include "learning/md_fracture_samples.hpp"
+#include "learning/prediction_window_loss.hpp"
 
 using namespace peristep::learning;
 
@@ -169,9 +171,7 @@ Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const Lea
                 std::size_t substeps, bool increments, const PredictionVariant& variant, bool diagnostics = false) {
   const auto t0 = std::chrono::steady_clock::now();
   FractureFrames data = fractureFrames(set);
-  if (increments)
-    for (std::size_t f = data.u.size(); f-- > 0;)
-      for (std::size_t k = 0; k < data.u[f].size(); ++k) data.u[f][k] -= data.u[0][k];
+  if (increments) subtractFrame0(data);
   const PredictionCase pc = predictionCase(set.grid, smp, model, s0, substeps, variant);
   const DamagedLpsOperator& op = pc.op;
   const PredictionSetup& s = pc.setup;
@@ -203,7 +203,7 @@ Outcome predict(const CoarseDataSet& set, const MdFractureSample& smp, const Lea
 int main(int argc, char** argv) {
   CLI::App app{"Predict the MD fracture samples with the learned LPS model of 003 and print the errors"};
   std::string path = "data/learning/graphene_md.h5";
-  double delta = kLearnedDelta, s0 = 0.11;
+  double delta = kLearnedDelta, s0 = 0;
   PredictionVariant variant;
   int order = kLearnedOrder;
   std::size_t substeps = 8;
@@ -212,7 +212,7 @@ int main(int argc, char** argv) {
   app.add_option("--data", path, "HDF5 file of learn_coarse_grain");
   app.add_option("--delta", delta, "horizon of the learned kernel [A] (learn_lps --nonnegative-kernel's choice: 10; 003: 20)");
   app.add_option("--order", order, "Bernstein order P (learn_lps --nonnegative-kernel's choice: 2; learn_lps's: 4)");
-  app.add_option("--s0", s0, "critical stretch at h = 5 A (003: 0.11)");
+  app.add_option("--s0", s0, "critical stretch at h = 5 A (003: 0.11; default: learned on frames 5-20 of III)");
   app.add_option("--substeps", substeps, "explicit steps per MD frame interval");
   app.add_option("--layer", variant.layer, "width of the prescribed edge layers of sample III, in delta");
   app.add_flag("--increments", increments, "predict u - u(frame 0): frame 0 as the unstressed reference state");
@@ -227,6 +227,7 @@ int main(int argc, char** argv) {
   app.add_flag("--signed-kernel", signedKernel, "003's kernel: D_k of either sign (else every D_k >= 0, K >= 0)");
   app.add_option("--scan", scan, "also: errors on sample III for these s0")->delimiter(',');
   if (const auto code = peristep::bench::parseArguments(app, argc, argv)) return *code;
+  variant.referenceSpacing = paperHorizon ? kPaperSpacing : 0.0;
   try {
     const auto t0 = std::chrono::steady_clock::now();
     const CoarseDataFile file = readCoarseData(path);
@@ -243,6 +244,16 @@ int main(int argc, char** argv) {
     std::printf("\n");
     describeStencil("of the training lattice:", makeLatticeStencil(train.lattice.hx, train.lattice.hy, delta), fit.kernel,
                     fit.lambda, fit.mu);
+    if (s0 <= 0) {  // the project's s0 step (learn_lps), with the prediction's operator
+      const auto t1 = std::chrono::steady_clock::now();
+      FractureFrames frames = fractureFrames(file.sets.at(kMdFractureSamples[0].set));
+      if (increments) subtractFrame0(frames);
+      const CriticalStretchFit learned =
+          learnCriticalStretch(frames, kMdFractureSamples[0], model, 5, 20, substeps, variant);
+      s0 = learned.s0;
+      std::printf("s0 learned from the prediction error on frames 5-20 of III: %.4f, 95%% interval [%.4f, %.4f] "
+                  "(%.1f s)\n", s0, learned.lower, learned.upper, seconds(t1));
+    }
     const double interval = file.sets.at("fracture_train").frameInterval;
     std::printf("frame interval %.3e s, %zu steps per frame: dt = %.3e s; s0 = %.4f (at h = 5 A), eta = 0.05, "
                 "edge layers of III %.2f delta%s%s\n\n",
@@ -250,10 +261,7 @@ int main(int argc, char** argv) {
                 increments ? "; displacements from frame 0 (--increments)" : "",
                 paperHorizon ? "; delta/h = delta / 5 A (--paper-horizon)" : "");
     const auto run = [&](const MdFractureSample& smp, double s0Run, bool diagnose) {
-      const CoarseDataSet& set = file.sets.at(smp.set);
-      PredictionVariant v = variant;
-      v.referenceSpacing = paperHorizon ? kPaperSpacing : 0.0;
-      return predict(set, smp, model, s0Run, substeps, increments, v, diagnose);
+      return predict(file.sets.at(smp.set), smp, model, s0Run, substeps, increments, variant, diagnose);
     };
     const auto& samples = kMdFractureSamples;
     std::printf("u, phi err: sqrt(sum_f |pred - MD|^2 / sum_f |MD|^2), frames 1-40; mean: of the per-frame ratios; "

@@ -1,7 +1,8 @@
 // Writes the FMU's resources/md_fracture_samples.bin for scene learnedFracture: the LPS model learned from
 // the static MD sets (the project's model, K >= 0, kLearnedDelta and kLearnedOrder: the fit of
-// bench/learn_predict) and the frames of the three fracture samples, from the committed coarse-grained data
-// (HDF5, which the FMU does not read).
+// bench/learn_predict), its s0 learned on frames 5-20 of sample III (learning/prediction_window_loss.hpp) and
+// the frames of the three fracture samples, from the committed coarse-grained data (HDF5, which the FMU does
+// not read).
 //   make_md_fracture_samples data/learning/graphene_md.h5 resources/md_fracture_samples.bin
 #include <cstdio>
 #include <exception>
@@ -10,6 +11,7 @@
 #include "learning/kernel_fit.hpp"
 #include "learning/lattice_stencil.hpp"
 #include "learning/md_fracture_samples.hpp"
+#include "learning/prediction_window_loss.hpp"
 
 using namespace peristep::learning;
 
@@ -31,9 +33,10 @@ int main(int argc, char** argv) {
       data.samples.push_back(fractureFrames(set));
       data.intervalSeconds.push_back(set.frameInterval);
     }
+    data.model.s0 = learnCriticalStretch(data.samples.front(), kMdFractureSamples.front(), data.model).s0;
     writeMdFractureData(argv[2], data);
-    std::printf("wrote %s: kernel alpha = %.4f, lambda = %.4f, mu = %.4f eV/A^3, %zu samples\n", argv[2],
-                fit.kernel.alpha, fit.lambda, fit.mu, data.samples.size());
+    std::printf("wrote %s: kernel alpha = %.4f, lambda = %.4f, mu = %.4f eV/A^3, s0 = %.4f, %zu samples\n",
+                argv[2], fit.kernel.alpha, fit.lambda, fit.mu, data.model.s0, data.samples.size());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "make_md_fracture_samples: %s\n", e.what());
     return 1;

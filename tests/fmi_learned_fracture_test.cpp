@@ -33,7 +33,8 @@ TEST_CASE("learnedFracture predicts each MD sample as the library does, bit for 
   } cases[] = {{PERISTEP_LEARNED_TRAINING, 0}, {PERISTEP_LEARNED_TEST, 1}, {PERISTEP_LEARNED_TRAINING_FINE, 2}};
   for (const auto& c : cases) {
     const FractureFrames& frames = data().samples[c.index];
-    const PredictionCase pc = predictionCase(frames.grid, kMdFractureSamples[c.index], data().model, 0.11, 8);
+    // learnedCriticalStretch's start 0 takes the s0 learned with the model.
+    const PredictionCase pc = predictionCase(frames.grid, kMdFractureSamples[c.index], data().model, data().model.s0, 8);
     const FractureRun run = predictFracture(pc.op, frames, pc.setup);
     REQUIRE(run.finite);
     const PredictionError expected = predictionError(pc.op, frames, run, pc.setup);
@@ -75,7 +76,21 @@ TEST_CASE("learnedFracture: sample III gives bench/learn_predict's errors, and a
     else CHECK(uy == first);
   }
   REQUIRE(s.fmu.fmi3FreeFMUState(s.instance, &state) == fmi3OK);
-  // bench/README.md, "Prediction": III training, h = 5 A, s0 = 0.11: e_u 49.1%, e_phi 53.2% (003: 27 / 9).
+  // bench/README.md, "Prediction": III training, h = 5 A, the learned s0 = 0.3028: e_u 14.5%, e_phi 36.1%
+  // (003: 27 / 9).
+  CHECK(data().model.s0 == Approx(0.3028).epsilon(1e-3));
+  CHECK(s.getFloat64(PERISTEP_VR_PREDICTION_ERROR_U).at(0) == Approx(0.145).epsilon(3e-3));
+  CHECK(s.getFloat64(PERISTEP_VR_PREDICTION_ERROR_DAMAGE).at(0) == Approx(0.361).epsilon(3e-3));
+}
+
+TEST_CASE("learnedFracture with 003's s0 = 0.11 gives bench/learn_predict --s0 0.11's errors", "[abi][learned]") {
+  Session s;
+  setUp(s, PERISTEP_LEARNED_TRAINING, 20);
+  REQUIRE(s.setFloat64(PERISTEP_VR_LEARNED_CRITICAL_STRETCH, {0.11}) == fmi3OK);
+  const double interval = data().intervalSeconds[0];
+  REQUIRE(s.initialize(0, 40 * interval) == fmi3OK);
+  REQUIRE(s.step(0, 40 * interval) == fmi3OK);
+  // bench/README.md, "Prediction": e_u 49.1%, e_phi 53.2%.
   CHECK(s.getFloat64(PERISTEP_VR_PREDICTION_ERROR_U).at(0) == Approx(0.4910).epsilon(1e-3));
   CHECK(s.getFloat64(PERISTEP_VR_PREDICTION_ERROR_DAMAGE).at(0) == Approx(0.5316).epsilon(1e-3));
 }

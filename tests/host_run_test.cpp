@@ -138,7 +138,7 @@ TEST_CASE("peristep info: every variable with causality, type and unit", "[host]
 
 // 003's prediction through the host: scenes/learned_fracture.toml runs sample III from the FMU's resources
 // (unpacked from PeriStep.fmu with the rest) and its CSV ends with the errors over frames 1-40 that
-// bench/learn_predict prints (49.1% / 53.2%, bench/README.md "Prediction").
+// bench/learn_predict prints with the learned s0 (14.5% / 36.1%, bench/README.md "Prediction").
 TEST_CASE("peristep run scenes/learned_fracture.toml: the learned model's errors against 40 MD frames",
           "[host][run][learned]") {
   TempDir dir;
@@ -161,6 +161,6 @@ TEST_CASE("peristep run scenes/learned_fracture.toml: the learned model's errors
     FAIL("no column " << name);
     return 0.0;
   };
-  CHECK(column("predictionErrorDisplacement") == Approx(0.4910).epsilon(1e-3));
-  CHECK(column("predictionErrorDamage") == Approx(0.5316).epsilon(1e-3));
+  CHECK(column("predictionErrorDisplacement") == Approx(0.145).epsilon(3e-3));
+  CHECK(column("predictionErrorDamage") == Approx(0.361).epsilon(3e-3));
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "learning/fracture_prediction.hpp"
+#include "learning/prediction_window_loss.hpp"
 #include "learning_support.hpp"
 
 using namespace peristep::learning;
@@ -89,4 +90,34 @@ TEST_CASE("with sub-steps the prediction of a synthetic run differs only by its 
   INFO("displacement error " << err.displacement << ", damage error " << err.damage);
   CHECK(err.displacement < 1e-2);
   CHECK(err.damage < 1e-2);
+}
+
+TEST_CASE("the critical stretch of a synthetic run is recovered from the error of a restarted prediction", "[learning]") {
+  // The project's s0 step (learning/prediction_window_loss.hpp) on a run whose crack grows inside the window.
+  const Synthetic s = syntheticRun(120, 1);
+  const std::size_t first = 10, last = 100;
+  std::vector<double> smax = s.drive.initialStretch;
+  for (std::size_t f = 0; f <= first; ++f) s.op.updateMaxStretch(s.frames.u[f], smax);
+  const std::vector<double> atFirst = s.op.damage(smax, kS0);
+  for (std::size_t f = first; f <= last; ++f) s.op.updateMaxStretch(s.frames.u[f], smax);
+  const std::vector<double> atLast = s.op.damage(smax, kS0);
+  double grown = 0;
+  for (std::size_t p = 0; p < atLast.size(); ++p) grown += atLast[p] - atFirst[p];
+  INFO("damage summed over the points: " << grown << " added in the window");
+  REQUIRE(grown > 1.0);
+
+  const PredictionWindowLoss window(s.op, s.frames, setupFor(s, 1), first, last);
+  CHECK(window.frames() == last - first);
+  const auto loss = [&](double s0) { return window(s0); };
+  CriticalStretchFit fit = fitCriticalStretch(loss, 0.02, 0.3, 30);
+  criticalStretchInterval(loss, static_cast<double>(window.frames()), fit);
+  INFO("s0 found " << fit.s0 << " in [" << fit.lower << ", " << fit.upper << "], loss " << fit.loss << " against "
+                   << window(0.3) << " at 0.3");
+  CHECK(std::abs(fit.s0 - kS0) < 0.01 * kS0);
+  CHECK(fit.loss < 1e-12 * window(0.3));
+  // Without noise the interval shrinks to the minimum (to the bisection's tolerance).
+  CHECK(fit.lower <= fit.s0);
+  CHECK(fit.upper >= fit.s0);
+  CHECK(std::abs(fit.lower - kS0) < 1e-3 * kS0);
+  CHECK(std::abs(fit.upper - kS0) < 1e-3 * kS0);
 }

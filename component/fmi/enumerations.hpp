@@ -86,8 +86,8 @@ inline constexpr std::array<Option<SceneId>, 11> kSceneOptions{{
      "after the 53rd; quasi-static, no image outputs"},
     {SceneId::LearnedFracture, "learnedFracture",
      "The LPS model learned from molecular dynamics of graphene (You et al., paper 003) predicting an MD "
-     "fracture sample (learnedSample) from its frame 0: the kernel and moduli fitted by learn_lps, s0 = "
-     "learnedCriticalStretch, edges or body force driven by the frames; needs the FMU's resources. nx, ny: the "
+     "fracture sample (learnedSample) from its frame 0: the kernel, moduli and s0 learned by learn_lps (or s0 = "
+     "learnedCriticalStretch), edges or body force driven by the frames; needs the FMU's resources. nx, ny: the "
      "sample's grid (20 x 20, or 31 x 31 for trainingFine); each communication step is a whole number of MD "
      "frame intervals of 4.95e-14 s (8 explicit steps each, or internalTimeStep), up to frame 40 (stop time "
      "1.98e-12 s); predictionErrorDisplacement and predictionErrorDamage compare with the frames so far"},

@@ -624,8 +624,9 @@ std::vector<Variable> makeTable() {
       {.name = "learnedCriticalStretch", .vr = PERISTEP_VR_LEARNED_CRITICAL_STRETCH, .type = T::Float64,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "learnedFracture scene: critical stretch s0 of the smooth bond states 003:(28) at h = 5 A "
-                      "(the fine sample takes s0 sqrt(5/3.17), 003 Sec. 5.4); 003's value 0.11",
-       .start = "0.11", .min = Bound{0, true}},
+                      "(the fine sample takes s0 sqrt(5/3.17), 003 Sec. 5.4); 0: the s0 learned with the model "
+                      "(frames 5-20 of sample III); 003's value 0.11",
+       .start = "0", .min = Bound{0}},
       {.name = "predictionErrorDisplacement", .vr = PERISTEP_VR_PREDICTION_ERROR_U, .type = T::Float64,
        .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
        .description = "learnedFracture scene: sqrt(sum_f |u_pred - u_MD|^2 / sum_f |u_MD|^2) over the frames "

@@ -1,11 +1,15 @@
 #include "learning/fracture_residual.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include <utility>
 
 #include "core/errors.hpp"
 
 namespace peristep::learning {
+
+void subtractFrame0(FractureFrames& data) {
+  for (std::size_t f = data.u.size(); f-- > 0;)
+    for (std::size_t k = 0; k < data.u[f].size(); ++k) data.u[f][k] -= data.u[0][k];
+}
 
 FractureResidual::FractureResidual(FractureFrames data, DamagedLpsOperator op, std::size_t first, std::size_t last,
                                    double margin, std::vector<double> initialStretch)
@@ -41,36 +45,6 @@ double FractureResidual::loss(double s0) const {
       }
   }
   return total;
-}
-
-CriticalStretchFit fitCriticalStretch(const FractureResidual& res, double lo, double hi, int points) {
-  require(hi > lo && points >= 3, "critical stretch fit: need lo < hi and >= 3 scan points");
-  CriticalStretchFit fit;
-  std::size_t best = 0;
-  for (int i = 0; i < points; ++i) {
-    const double s = lo + (hi - lo) * i / (points - 1);
-    fit.scanS0.push_back(s);
-    fit.scanLoss.push_back(res.loss(s));
-    if (fit.scanLoss.back() < fit.scanLoss[best]) best = static_cast<std::size_t>(i);
-  }
-  fit.evaluations = points;
-  // Golden sections on the bracket around the best scan point.
-  double a = fit.scanS0[best > 0 ? best - 1 : 0], b = fit.scanS0[std::min<std::size_t>(best + 1, points - 1)];
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double c = b - g * (b - a), d = a + g * (b - a), fc = res.loss(c), fd = res.loss(d);
-  fit.evaluations += 2;
-  while (b - a > 1e-7 * (std::abs(a) + std::abs(b))) {
-    if (fc < fd) {
-      b = d, d = c, fd = fc, c = b - g * (b - a), fc = res.loss(c);
-    } else {
-      a = c, c = d, fc = fd, d = a + g * (b - a), fd = res.loss(d);
-    }
-    ++fit.evaluations;
-  }
-  fit.s0 = 0.5 * (a + b);
-  fit.loss = res.loss(fit.s0);
-  if (fit.scanLoss[best] < fit.loss) fit.s0 = fit.scanS0[best], fit.loss = fit.scanLoss[best];
-  return fit;
 }
 
 }  // namespace peristep::learning

@@ -1,8 +1,8 @@
 #pragma once
 // Damage-criterion learning step of 003 (Algorithm 1 (v)): with the kernel and moduli fixed, the equation
-// residual 003:(42) of a fracture sample as a function of the critical stretch s0 alone, and its 1-D
-// minimization (a scan, then golden-section refinement; 003 uses bisection). The largest bond stretches do
-// not depend on s0 and are found once, so a loss evaluation is one pass of L_KN per frame.
+// residual 003:(42) of a fracture sample as a function of the critical stretch s0 alone (minimized by
+// learning/critical_stretch_fit.hpp). The largest bond stretches do not depend on s0 and are found once, so a
+// loss evaluation is one pass of L_KN per frame.
 #include <cstddef>
 #include <vector>
 
@@ -16,6 +16,8 @@ struct FractureFrames {
   std::vector<double> rho;               // per point
   std::vector<std::vector<double>> u, b;  // per frame, interleaved (x, y)
 };
+// The frames minus frame 0: frame 0 as the unstressed reference state.
+void subtractFrame0(FractureFrames& data);
 
 class FractureResidual {
  public:
@@ -37,13 +39,5 @@ class FractureResidual {
   std::vector<std::size_t> rows_;
   std::vector<std::vector<double>> maxStretch_;  // per frame
 };
-
-struct CriticalStretchFit {
-  double s0 = 0, loss = 0;
-  std::vector<double> scanS0, scanLoss;
-  int evaluations = 0;
-};
-// Minimum of loss(s0) on [lo, hi]: a uniform scan of `points`, then golden sections around the best point.
-CriticalStretchFit fitCriticalStretch(const FractureResidual& residual, double lo, double hi, int points = 60);
 
 }  // namespace peristep::learning

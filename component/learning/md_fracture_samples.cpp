@@ -13,7 +13,7 @@ namespace peristep::learning {
 namespace {
 
 constexpr double kHalfSide = 50.0;  // the MD sheet is [-50, 50]^2 A, the slit x1 = 0, x2 from -50 to -25 A
-constexpr char kMagic[] = "PeriStep MD fracture samples 2";
+constexpr char kMagic[] = "PeriStep MD fracture samples 3";
 
 }  // namespace
 
@@ -52,6 +52,7 @@ void writeMdFractureData(const std::string& path, const MdFractureData& d) {
   w.put(d.model.lambda);
   w.put(d.model.mu);
   w.put(d.model.trainingSpacing);
+  w.put(d.model.s0);
   w.put<std::uint64_t>(d.samples.size());
   for (std::size_t k = 0; k < d.samples.size(); ++k) {
     const FractureFrames& f = d.samples[k];
@@ -85,6 +86,7 @@ MdFractureData readMdFractureData(const std::string& path) {
     d.model.lambda = r.get<double>();
     d.model.mu = r.get<double>();
     d.model.trainingSpacing = r.get<double>();
+    d.model.s0 = r.get<double>();
     const auto samples = r.get<std::uint64_t>();
     for (std::uint64_t k = 0; k < samples; ++k) {
       FractureFrames f;

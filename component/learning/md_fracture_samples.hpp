@@ -28,12 +28,14 @@ inline const std::array<MdFractureSample, 3> kMdFractureSamples{{
     {"III training, h = 3.17 A", "fracture_train_fine", true, std::sqrt(5.0 / 3.17), "19 / 30"},
 }};
 
-// The learned model: kernel (its horizon is the learned delta), Lame moduli [eV/A^3] and the spacing of the
-// lattice it was learned on [A] (x; the training stencil is the bonds within delta on that lattice).
+// The learned model: kernel (its horizon is the learned delta), Lame moduli [eV/A^3], the spacing of the
+// lattice it was learned on [A] (x; the training stencil is the bonds within delta on that lattice) and the
+// critical stretch at h = 5 A (learning/prediction_window_loss.hpp; 0 where it was not learned).
 struct LearnedModel {
   BernsteinKernel kernel;
   double lambda = 0, mu = 0;
   double trainingSpacing = 5.0;
+  double s0 = 0;
 };
 
 // The project's learned model: the validation choice of bench/learn_lps --nonnegative-kernel (K >= 0: with 003's
@@ -72,7 +74,8 @@ double predictionHorizon(const CoarseGrid& grid, const LearnedModel& model, cons
 DamagedLpsOperator predictionOperator(const CoarseGrid& grid, const LearnedModel& model,
                                       const PredictionVariant& variant = {});
 
-// The model and, per sample of kMdFractureSamples in order, its frames 0..40 and the frame interval [s].
+// The model (with its learned s0) and, per sample of kMdFractureSamples in order, its frames 0..40 and the
+// frame interval [s].
 struct MdFractureData {
   LearnedModel model;
   std::vector<FractureFrames> samples;

@@ -98,9 +98,9 @@ void validate(const SceneParameters& p) {
   if (isDynamic(p))
     validateDynamicScene(p);  // the specimen with the dynamic model and scenes 5-7, its presets
   else if (p.scene == SceneId::LearnedFracture)  // the sample's own grid (the runner checks nx, ny)
-    require(std::isfinite(p.learnedCriticalStretch) && p.learnedCriticalStretch > 0 &&
+    require(std::isfinite(p.learnedCriticalStretch) && p.learnedCriticalStretch >= 0 &&
                 std::isfinite(p.internalTimeStep) && p.internalTimeStep >= 0,
-            "learnedCriticalStretch must be positive and internalTimeStep >= 0 (got " +
+            "learnedCriticalStretch and internalTimeStep must be >= 0 (got " +
                 std::to_string(p.learnedCriticalStretch) + ", " + std::to_string(p.internalTimeStep) + ")");
   else if (p.scene != SceneId::GamutBar)  // the specimen and its presets (the bar checks its own spec)
     validate(withPreset(p).specimen, p.grid);

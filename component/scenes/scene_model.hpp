@@ -80,10 +80,11 @@ struct SceneParameters {
   // protocol of scenes/gamut_loading.hpp, one force step per fmi3DoStep).
   GamutBarSpec gamutBar;
   bool gamutCyclic = false;
-  // LearnedFracture: the sample, s0 at h = 5 A (003: 0.11; the fine sample scales it), and where the FMU's
-  // resources are (the model and the frames; the FMI layer sets it from fmi3InstantiateCoSimulation).
+  // LearnedFracture: the sample, s0 at h = 5 A (0: the s0 learned with the model; 003's is 0.11; the fine sample
+  // scales it), and where the FMU's resources are (the model and the frames; the FMI layer sets it from
+  // fmi3InstantiateCoSimulation).
   LearnedSample learnedSample = LearnedSample::Training;
-  double learnedCriticalStretch = 0.11;
+  double learnedCriticalStretch = 0;
   std::string resourcePath;
   WorkLimits limits;
   ProgressHook progress;            // optional: told how far long set-ups and steps have come
