@@ -144,7 +144,13 @@ int main(int argc, char** argv) {
     std::printf("\n");
 
     // The project's s0 step: the prediction's displacement error on the same frames (003:(42) names no s0 on
-    // the MD samples, bench/README.md "Critical stretch").
+    // the MD samples, bench/README.md "Critical stretch"). It runs the damaged model forward, which is stable
+    // only with K >= 0 (bench/README.md "A stable learned model").
+    if (std::any_of(f.kernel.D.begin(), f.kernel.D.end(), [](double d) { return d < 0; })) {
+      std::printf("no s0 by the prediction error: the kernel changes sign, and with it the damaged model is "
+                  "unstable (use --nonnegative-kernel)\n003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
+      return 0;
+    }
     const auto t3 = std::chrono::steady_clock::now();
     const auto sample = std::find_if(kMdFractureSamples.begin(), kMdFractureSamples.end(),
                                      [&](const MdFractureSample& m) { return s0Set == m.set; });
