@@ -147,8 +147,9 @@ int main(int argc, char** argv) {
     // the MD samples, bench/README.md "Critical stretch"). It runs the damaged model forward, which is stable
     // only with K >= 0 (bench/README.md "A stable learned model").
     if (std::any_of(f.kernel.D.begin(), f.kernel.D.end(), [](double d) { return d < 0; })) {
-      std::printf("no s0 by the prediction error: the kernel changes sign, and with it the damaged model is "
-                  "unstable (use --nonnegative-kernel)\n003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
+      std::printf("no s0 by the prediction error: the kernel has negative Bernstein coefficients, and with a "
+                  "sign-changing kernel the damaged model is unstable (use --nonnegative-kernel)\n"
+                  "003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
       return 0;
     }
     const auto t3 = std::chrono::steady_clock::now();
@@ -160,7 +161,7 @@ int main(int argc, char** argv) {
                 "interval [%.4f, %.4f] (%d predictions, %.1f s)\n  loss / loss(s0 = 0.5):",
                 firstFrame, firstFrame + 1, lastFrame, byPrediction.s0, byPrediction.lower, byPrediction.upper,
                 byPrediction.evaluations, seconds(t3));
-    for (std::size_t i = 0; i < byPrediction.scanS0.size(); i += scanStride / 2)
+    for (std::size_t i = 0; i < byPrediction.scanS0.size(); i += std::max<std::size_t>(1, scanStride / 2))
       std::printf(" %.3f:%.3f", byPrediction.scanS0[i], byPrediction.scanLoss[i] / byPrediction.scanLoss.back());
     std::printf("\n003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
   } catch (const std::exception& e) {

@@ -41,18 +41,14 @@ void criticalStretchInterval(const std::function<double(double)>& loss, double o
   require(observations > 0 && !fit.scanS0.empty(), "critical stretch interval: needs a fit and observations > 0");
   const double bound = fit.loss * std::exp(3.84 / observations);
   const auto inside = [&](double v) { return v <= bound; };
-  // Scan points on each side of s0 up to the first one outside; bisection between it and the last inside.
-  const auto end = [&](int direction) {
-    const auto n = static_cast<std::ptrdiff_t>(fit.scanS0.size());
-    auto i = std::lower_bound(fit.scanS0.begin(), fit.scanS0.end(), fit.s0) - fit.scanS0.begin();
-    if (direction < 0) --i;
-    double in = fit.s0;
-    for (; i >= 0 && i < n; i += direction) {
-      if (!inside(fit.scanLoss[i])) break;
-      in = fit.scanS0[i];
-    }
-    if (i < 0 || i >= n) return in;
-    double out = fit.scanS0[i];
+  // The outermost scan points inside (or s0), then bisection towards their outer neighbours.
+  const auto n = static_cast<std::ptrdiff_t>(fit.scanS0.size());
+  std::ptrdiff_t first = n, last = -1;
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    if (inside(fit.scanLoss[static_cast<std::size_t>(i)])) first = std::min(first, i), last = i;
+  const auto refine = [&](double in, std::ptrdiff_t outIndex) {
+    if (outIndex < 0 || outIndex >= n) return in;
+    double out = fit.scanS0[static_cast<std::size_t>(outIndex)];
     while (std::abs(out - in) > 1e-6 * std::abs(fit.s0)) {
       const double mid = 0.5 * (in + out);
       (inside(loss(mid)) ? in : out) = mid;
@@ -60,7 +56,11 @@ void criticalStretchInterval(const std::function<double(double)>& loss, double o
     }
     return in;
   };
-  fit.lower = end(-1), fit.upper = end(+1);
+  const double lowest = first < n ? std::min(fit.s0, fit.scanS0[static_cast<std::size_t>(first)]) : fit.s0;
+  const double highest = last >= 0 ? std::max(fit.s0, fit.scanS0[static_cast<std::size_t>(last)]) : fit.s0;
+  const auto below = std::lower_bound(fit.scanS0.begin(), fit.scanS0.end(), lowest) - fit.scanS0.begin() - 1;
+  const auto above = std::upper_bound(fit.scanS0.begin(), fit.scanS0.end(), highest) - fit.scanS0.begin();
+  fit.lower = refine(lowest, below), fit.upper = refine(highest, above);
 }
 
 }  // namespace peristep::learning

@@ -20,9 +20,11 @@ struct CriticalStretchFit {
 CriticalStretchFit fitCriticalStretch(const std::function<double(double)>& loss, double lo, double hi,
                                       int points = 60);
 
-// The connected range of s0 around fit.s0 where loss <= fit.loss exp(3.84 / n): the likelihood-ratio 95%
-// interval of a least-squares loss made of n independent Gaussian observations with unknown variance
-// (chi^2_1 quantile 3.84). Ends found by bisection between scan points; an end at the scan's bound is that bound.
+// The smallest range of s0 that holds every s0 with loss <= fit.loss exp(3.84 / n): the likelihood-ratio 95%
+// region of a least-squares loss made of n independent Gaussian observations with unknown variance (chi^2_1
+// quantile 3.84), closed over its gaps (a rough loss can dip below the bound away from its minimum). The ends
+// are the outermost scan points inside, refined by bisection towards their outer neighbours; an end at the
+// scan's bound is that bound.
 void criticalStretchInterval(const std::function<double(double)>& loss, double observations, CriticalStretchFit& fit);
 
 }  // namespace peristep::learning
