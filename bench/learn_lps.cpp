@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
     std::printf("003 Sec. 5.1: delta = 20 A, lambda = -0.4796 TPa, mu = 0.7978 TPa\n");
     std::printf("kernel learning took %.1f s\n", seconds(t0));
 
-    // Step 2 (003 Algorithm 1 (v)): s0 from frames first..last of the fracture training sample.
+    // Step 2 (003 Algorithm 1 (v)): s0 from frames first..last of a fracture sample, by 003:(42).
     const auto t2 = std::chrono::steady_clock::now();
     const CoarseDataSet& frac = file.sets.at(s0Set);
     FractureFrames frames = fractureFrames(frac);
@@ -141,15 +141,14 @@ int main(int argc, char** argv) {
     std::printf("  loss / loss(s0 = 0.4):");
     for (std::size_t i = 0; i < s0.scanS0.size(); i += scanStride)
       std::printf(" %.3f:%.3f", s0.scanS0[i], s0.scanLoss[i] / s0.scanLoss.back());
-    std::printf("\n");
+    std::printf("\n003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
 
     // The project's s0 step: the prediction's displacement error on the same frames (003:(42) names no s0 on
     // the MD samples, bench/README.md "Critical stretch"). It runs the damaged model forward, which is stable
     // only with K >= 0 (bench/README.md "A stable learned model").
     if (std::any_of(f.kernel.D.begin(), f.kernel.D.end(), [](double d) { return d < 0; })) {
       std::printf("no s0 by the prediction error: the kernel has negative Bernstein coefficients, and with a "
-                  "sign-changing kernel the damaged model is unstable (use --nonnegative-kernel)\n"
-                  "003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
+                  "sign-changing kernel the damaged model is unstable (use --nonnegative-kernel)\n");
       return 0;
     }
     const auto t3 = std::chrono::steady_clock::now();
@@ -157,13 +156,13 @@ int main(int argc, char** argv) {
                                      [&](const MdFractureSample& m) { return s0Set == m.set; });
     if (sample == kMdFractureSamples.end()) throw std::runtime_error("--s0-set: not a fracture sample: " + s0Set);
     const CriticalStretchFit byPrediction = learnCriticalStretch(frames, *sample, model, firstFrame, lastFrame, 8, variant);
-    std::printf("critical stretch by the prediction error (restarted at frame %zu, frames %zu-%zu): s0 = %.4f, 95%% "
-                "interval [%.4f, %.4f] (%d predictions, %.1f s)\n  loss / loss(s0 = 0.5):",
+    std::printf("critical stretch by the prediction error (restarted at frame %zu, frames %zu-%zu): s0 = %.4f at "
+                "h = 5 A, 95%% interval [%.4f, %.4f] (%d predictions, %.1f s)\n  loss / loss(s0 = 0.5):",
                 firstFrame, firstFrame + 1, lastFrame, byPrediction.s0, byPrediction.lower, byPrediction.upper,
                 byPrediction.evaluations, seconds(t3));
     for (std::size_t i = 0; i < byPrediction.scanS0.size(); i += std::max<std::size_t>(1, scanStride / 2))
       std::printf(" %.3f:%.3f", byPrediction.scanS0[i], byPrediction.scanLoss[i] / byPrediction.scanLoss.back());
-    std::printf("\n003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
+    std::printf("\n");
   } catch (const std::exception& e) {
     std::cerr << "learn_lps: " << e.what() << "\n";
     return 1;
