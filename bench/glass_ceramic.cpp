@@ -23,7 +23,6 @@
 // `peristep run` leaves), so one long run yields both the numbers and the picture.
 // h = 2 um is the paper's full size (413 x 213 = 87969 points with the collar).
 #include <malloc.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -125,8 +124,7 @@ Progress readCheckpoint(const std::string& path, const RunOptions& options, Glas
 }  // namespace
 
 int main(int argc, char** argv) try {
-  // libgomp, OpenBLAS and glibc read these at start: set them, then start afresh.
-  if (peristep::preferProcessSettings()) execv("/proc/self/exe", argv);
+  peristep::startWithProcessSettings(argv);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines appear as they come, also in a log file
   double hUm = 8, fraction = 0.2, maxLoadUm = 1.0, stepUm = 0.004, checkpointMinutes = 10;
   std::uint64_t seed = 1;

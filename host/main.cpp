@@ -1,6 +1,5 @@
 // peristep: runs the PeriStep FMU through its C ABI only (see commands/ for what each subcommand does).
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
 #include <iostream>
 
@@ -11,8 +10,7 @@
 using namespace peristep::host;
 
 int main(int argc, char** argv) {
-  // Before the FMU (and with it libgomp and OpenBLAS) is loaded; glibc reads its tunables at start only.
-  if (peristep::preferProcessSettings()) execv("/proc/self/exe", argv);
+  peristep::startWithProcessSettings(argv);  // before the FMU (and with it libgomp and OpenBLAS) is loaded
   CLI::App app{"peristep: drive the PeriStep peridynamic fracture component (an FMI 3.0 co-simulation FMU)"};
   app.set_version_flag("--version", PERISTEP_VERSION);
   app.require_subcommand(1);

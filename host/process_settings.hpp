@@ -10,7 +10,9 @@
 //   of each page is a fault (h = 4 um, f = 0.8: 4.4 million faults; with huge pages 0.26 million and 14% less
 //   wall time; bench/README.md, "Issue 14, session 31"). The component itself leaves the importer's allocator
 //   alone; the programs that own the process ask for it.
-// The caller starts itself afresh when this set anything (glibc reads its tunables at start).
+// The program starts itself afresh when this set anything (glibc reads its tunables at start).
+#include <unistd.h>
+
 #include <cstdlib>
 #include <utility>
 
@@ -26,6 +28,12 @@ inline bool preferProcessSettings() {
       set = true;
     }
   return set;
+}
+
+// At the top of main, before anything reads them: the settings above, then the program afresh with them
+// (if that fails it goes on as it is, only slower).
+inline void startWithProcessSettings(char** argv) {
+  if (preferProcessSettings()) execv("/proc/self/exe", argv);
 }
 
 }  // namespace peristep
