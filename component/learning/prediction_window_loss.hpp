@@ -29,8 +29,9 @@ class PredictionWindowLoss {
 };
 
 // The project's s0 step on an MD fracture sample (003: frames 5-20 of sample III): the loss above for the
-// prediction's operator and set-up on `grid`, minimized on [0.005, 0.5] (100 scan points), with its 95%
-// interval counting each frame as one observation (points within a frame are not independent: a smooth field).
+// prediction's operator and set-up on the sample's grid (data.grid), minimized on [0.005, 0.5] (100 scan points),
+// with its 95% interval counting each frame as one observation (points within a frame are not independent: a
+// smooth field).
 // s0 is returned at h = 5 A (divided by the sample's s0Scale).
 CriticalStretchFit learnCriticalStretch(const FractureFrames& data, const MdFractureSample& sample,
                                         const LearnedModel& model, std::size_t first = 5, std::size_t last = 20,
