@@ -23,6 +23,16 @@ struct DofMap {
   std::int64_t size = 0;
 
   std::vector<char> thetaPoints() const;  // 1 where theta is an unknown
+
+  // f(row) for the unknowns of point p, in their order.
+  template <class F>
+  void forEachRow(std::size_t p, F&& f) const {
+    if (u[p] >= 0) {
+      f(u[p]);
+      f(u[p] + 1);
+    }
+    if (theta[p] >= 0) f(theta[p]);
+  }
 };
 DofMap numberDofs(const PointCloud& cloud, const Neighbours& nb);
 

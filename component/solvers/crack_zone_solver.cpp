@@ -37,16 +37,13 @@ double backwardError(const CsrMatrix& A, std::span<const double> b, std::span<co
   return worst;
 }
 
-}  // namespace
+// Horizons around the rows changed beyond the zone that the patch correction takes in, and its largest size, a
+// share of the unknowns: its LU and products cost what they save in substitutions when the patch is a twentieth
+// of the system (bench/README.md, "Issue 14, session 36").
+constexpr int kPatchHorizons = 2;
+constexpr std::size_t kPatchShare = 20;
 
-template <class F>
-void CrackZoneSolver::forRows(std::size_t p, F&& f) const {
-  if (dofs_.u[p] >= 0) {
-    f(dofs_.u[p]);
-    f(dofs_.u[p] + 1);
-  }
-  if (dofs_.theta[p] >= 0) f(dofs_.theta[p]);
-}
+}  // namespace
 
 std::vector<std::int64_t> CrackZoneSolver::zoneUnknowns() const {
   std::vector<std::uint8_t> inZone(dofs_.u.size(), 0);
@@ -57,7 +54,7 @@ std::vector<std::int64_t> CrackZoneSolver::zoneUnknowns() const {
     }
   std::vector<std::int64_t> unknowns;
   for (std::size_t p = 0; p < inZone.size(); ++p)
-    if (inZone[p]) forRows(p, [&](std::int64_t r) { unknowns.push_back(r); });
+    if (inZone[p]) dofs_.forEachRow(p, [&](std::int64_t r) { unknowns.push_back(r); });
   std::sort(unknowns.begin(), unknowns.end());
   return unknowns;
 }
@@ -112,6 +109,9 @@ std::vector<std::size_t> CrackZoneSolver::planCore(const std::vector<double>& pr
 void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> corePoints,
                                 std::vector<std::size_t> extraPoints) {
   kept_.clear();  // they were preconditioned by the old factors
+  patch_.clear();
+  beyondRows_.clear();
+  isBeyondRow_.assign(static_cast<std::size_t>(dofs_.size), 0);
   core_ = std::move(corePoints);
   extra_ = std::move(extraPoints);
   zone_ = zoneUnknowns();
@@ -123,7 +123,9 @@ void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> cor
   takesUp_.assign(zone_.size(), 1);
   for (std::size_t p : extra_)
     if (!std::binary_search(core_.begin(), core_.end(), p))
-      forRows(p, [&](std::int64_t r) { takesUp_[static_cast<std::size_t>(zoneIndex_[static_cast<std::size_t>(r)])] = 0; });
+      dofs_.forEachRow(p, [&](std::int64_t r) {
+        takesUp_[static_cast<std::size_t>(zoneIndex_[static_cast<std::size_t>(r)])] = 0;
+      });
   scale_.assign(static_cast<std::size_t>(A.rows), 1.0);
   for (std::int64_t r = 0; r < A.rows; ++r)
     for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
@@ -150,7 +152,7 @@ std::vector<std::int32_t> CrackZoneSolver::pivotOrder() const {
   std::vector<std::size_t> points;
   for (std::size_t p = 0; p < n; ++p) {
     bool outside = false;
-    forRows(p, [&](std::int64_t r) { outside = outside || zoneIndex_[static_cast<std::size_t>(r)] < 0; });
+    dofs_.forEachRow(p, [&](std::int64_t r) { outside = outside || zoneIndex_[static_cast<std::size_t>(r)] < 0; });
     if (!outside) continue;
     vertex[p] = static_cast<std::int32_t>(points.size());
     points.push_back(p);
@@ -166,7 +168,8 @@ std::vector<std::int32_t> CrackZoneSolver::pivotOrder() const {
   for (std::size_t v = 0; v < points.size(); ++v) order[static_cast<std::size_t>(rank[v])] = points[v];
   std::vector<std::int32_t> position(static_cast<std::size_t>(dofs_.size), -1);
   std::int32_t next = 0;
-  for (std::size_t p : order) forRows(p, [&](std::int64_t r) { position[static_cast<std::size_t>(r)] = next++; });
+  for (std::size_t p : order)
+    dofs_.forEachRow(p, [&](std::int64_t r) { position[static_cast<std::size_t>(r)] = next++; });
   for (std::int64_t r : zone_) position[static_cast<std::size_t>(r)] = next++;
   require(next == static_cast<std::int32_t>(dofs_.size), "crack zone: ordering misses unknowns");
   return position;
@@ -200,7 +203,13 @@ void CrackZoneSolver::setZoneRow(const CsrMatrix& A, std::int64_t row, std::vect
   const std::int32_t i = zoneIndex_[static_cast<std::size_t>(row)];
   const bool takesUp = i >= 0 && takesUp_[static_cast<std::size_t>(i)];
   if (takesUp) dense_.setRow(static_cast<std::size_t>(i), columns, change);
-  if (kind == RowChange::BeyondZone || (kind == RowChange::InZone && !takesUp)) ++beyond;
+  if (kind == RowChange::BeyondZone || (kind == RowChange::InZone && !takesUp)) {
+    ++beyond;
+    if (!isBeyondRow_[static_cast<std::size_t>(row)]) {
+      isBeyondRow_[static_cast<std::size_t>(row)] = 1;
+      beyondRows_.push_back(row);
+    }
+  }
 }
 
 std::size_t CrackZoneSolver::update(const CsrMatrix& A, std::span<const std::size_t> points) {
@@ -209,7 +218,7 @@ std::size_t CrackZoneSolver::update(const CsrMatrix& A, std::span<const std::siz
   std::vector<double> change;
   std::size_t beyond = 0;
   for (std::size_t p : points)
-    forRows(p, [&](std::int64_t r) {
+    dofs_.forEachRow(p, [&](std::int64_t r) {
       setZoneRow(A, r, columns, change, beyond);
       const auto b = static_cast<std::size_t>(A.rowStart[r]), e = static_cast<std::size_t>(A.rowStart[r + 1]);
       kept_.refreshRow(static_cast<std::size_t>(r), std::span(A.col).subspan(b, e - b),
@@ -276,7 +285,13 @@ GmresResult CrackZoneSolver::solveIterative(const CsrMatrix& A, std::span<const 
     A.multiply(t, out);
     for (std::size_t i = 0; i < n; ++i) out[i] *= scale_[i];
   };
-  const auto precondition = [&](std::span<const double> in, std::span<double> out) { solveScaled(in, out); };
+  patch_.build(A, scale_, beyondRows_, kPatchHorizons, n / kPatchShare);
+  const PatchCorrection::Solve zoneSolve = [&](std::span<const double> in, std::span<double> out) {
+    solveScaled(in, out);
+  };
+  const auto precondition = [&](std::span<const double> in, std::span<double> out) {
+    patch_.apply(in, out, zoneSolve);
+  };
   const GmresResult result = gmres(apply, precondition, bs, y, tol, maxIterations, restart, recycle ? &kept_ : nullptr);
   // Single-precision factors of a nearly singular matrix can overflow: x then keeps the last finite solution.
   if (std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); }))

@@ -15,6 +15,7 @@
 #include "models/lps_system.hpp"
 #include "solvers/dense_row_update_solver.hpp"
 #include "solvers/gmres.hpp"
+#include "solvers/patch_correction.hpp"
 #include "solvers/schur_factorization.hpp"
 
 namespace peristep {
@@ -23,7 +24,7 @@ class CrackZoneSolver {
  public:
   // solveIterative() keeps up to `keptDirections` GMRES directions between solves.
   CrackZoneSolver(const Neighbours& nb, const DofMap& dofs, FactorPrecision precision, std::size_t keptDirections = 0)
-      : nb_(nb), dofs_(dofs), sparse_(precision), kept_(keptDirections) {}
+      : nb_(nb), dofs_(dofs), sparse_(precision), kept_(keptDirections), patch_(nb, dofs) {}
 
   // Factorizes A with the zone of `corePoints` (ascending) eliminated last. `extraPoints` (ascending) and their
   // neighbours join the zone but not the core: points the sparse factors should not see, whose own rows' changes
@@ -60,7 +61,8 @@ class CrackZoneSolver {
                     std::span<const std::size_t> correctionBlocks, const CsrMatrix& A);
 
   // A x = b when rows outside the core changed too: GMRES on the scaled system D A D, preconditioned by
-  // the zone solver (exact up to those rows), from x; stops at relative residual tol. x is left as it was
+  // the zone solver (exact up to those rows) with a local correction around those rows
+  // (solvers/patch_correction.hpp), from x; stops at relative residual tol. x is left as it was
   // when the iteration became non-finite. With `recycle`, the directions of earlier such solves since the last
   // factorize() or forgetDirections() are searched first and this solve's join them.
   GmresResult solveIterative(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol,
@@ -88,9 +90,6 @@ class CrackZoneSolver {
   // cannot take up.
   void setZoneRow(const CsrMatrix& A, std::int64_t row, std::vector<std::int32_t>& columns,
                   std::vector<double>& change, std::size_t& beyond);
-  // Rows of point p that are unknowns.
-  template <class F>
-  void forRows(std::size_t p, F&& f) const;
 
   const Neighbours& nb_;
   const DofMap& dofs_;
@@ -106,6 +105,11 @@ class CrackZoneSolver {
   std::vector<std::int32_t> zoneIndex_;  // per unknown: position in zone_, -1 outside
   std::vector<std::uint8_t> takesUp_;    // per zone row: its changes within the zone go to the dense solver
   RecycledDirections kept_;
+  // Rows counted as changed beyond the zone since factorize(), in the order found (and a flag per unknown):
+  // solveIterative() builds its patch correction around them.
+  std::vector<std::int64_t> beyondRows_;
+  std::vector<std::uint8_t> isBeyondRow_;
+  PatchCorrection patch_;
   std::vector<double> reduced_, xZone_;
   std::int64_t substitutions_ = 0;
 };
