@@ -37,10 +37,10 @@ double backwardError(const CsrMatrix& A, std::span<const double> b, std::span<co
   return worst;
 }
 
-// Horizons around the rows changed beyond the zone that the patch correction takes in (three, four or six cost
-// zones and substitutions at h = 4 and 2 um, session 38), and its largest size as a share of the unknowns: at
-// h = 8 um patches of ~1300 of some 20,000 unknowns cost more in LUs and products than they saved in
-// substitutions (bench/README.md, "Issue 14, sessions 35, 36 and 38").
+// Horizons around the rows changed beyond the zone that the patch correction takes in (one or four cost zones
+// and substitutions at full size, three, four or six at h = 4 um; session 38), and its largest size as a share
+// of the unknowns: at h = 8 um patches of ~1300 of some 20,000 unknowns cost more in LUs and products than they
+// saved in substitutions (bench/README.md, "Issue 14, sessions 35, 36 and 38").
 constexpr int kPatchHorizons = 2;
 constexpr std::size_t kPatchShare = 20;
 
