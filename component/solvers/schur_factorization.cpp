@@ -1,7 +1,6 @@
 #include "solvers/schur_factorization.hpp"
 
 #include <dmumps_c.h>
-#include <smumps_c.h>
 #include <sys/mman.h>
 
 #include <algorithm>
@@ -9,10 +8,10 @@
 #include <limits>
 #include <new>
 #include <string>
-#include <type_traits>
 #include <utility>
 
 #include "core/errors.hpp"
+#include "solvers/multifrontal_lu.hpp"
 
 namespace peristep {
 
@@ -33,20 +32,6 @@ namespace {
 constexpr int kInitialize = -1, kTerminate = -2, kAnalyze = 1, kFactorize = 2, kSolve = 3;
 constexpr int kHostWorks = 1, kUnsymmetric = 0, kCommSelf = -987654;  // MUMPS' sequential library
 
-// MUMPS' C interface per precision: the same fields under another struct name and scalar type.
-template <class Real>
-struct MumpsApi;
-template <>
-struct MumpsApi<double> {
-  using Struc = DMUMPS_STRUC_C;
-  static void run(Struc& id) { dmumps_c(&id); }
-};
-template <>
-struct MumpsApi<float> {
-  using Struc = SMUMPS_STRUC_C;
-  static void run(Struc& id) { smumps_c(&id); }
-};
-
 // Memory mapped once and kept: MUMPS's main work array across factorizations.
 struct Workspace {
   void* data = nullptr;
@@ -66,15 +51,6 @@ struct Workspace {
 // the TLB at every entry: about 19 ms for a zone of 1400 unknowns at h = 8 um, 3 ms in tiles).
 constexpr std::size_t kTile = 64;
 
-template <class Real>
-void transposeWiden(const std::vector<Real>& in, std::vector<double>& out, std::size_t n) {
-#pragma omp parallel for schedule(static)
-  for (std::size_t jb = 0; jb < n; jb += kTile)
-    for (std::size_t ib = 0; ib < n; ib += kTile)
-      for (std::size_t i = ib; i < std::min(ib + kTile, n); ++i)
-        for (std::size_t j = jb; j < std::min(jb + kTile, n); ++j) out[j * n + i] = static_cast<double>(in[i * n + j]);
-}
-
 void transposeInPlace(std::vector<double>& a, std::size_t n) {
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t ib = 0; ib < n; ib += kTile)
@@ -83,17 +59,17 @@ void transposeInPlace(std::vector<double>& a, std::size_t n) {
         for (std::size_t j = std::max(jb, i + 1); j < std::min(jb + kTile, n); ++j) std::swap(a[i * n + j], a[j * n + i]);
 }
 
-template <class Real>
+// MUMPS' double-precision factors (dmumps).
 class Mumps final : public SchurFactorization::Backend {
  public:
-  using Struc = typename MumpsApi<Real>::Struc;
+  using Real = double;
 
   Mumps() {
     id_.job = kInitialize;
     id_.par = kHostWorks;
     id_.sym = kUnsymmetric;
     id_.comm_fortran = kCommSelf;
-    MumpsApi<Real>::run(id_);
+    dmumps_c(&id_);
     if (id_.infog[0] < 0)
       throw SolverFailure("mumps: initialization failed with INFOG(1) = " + std::to_string(id_.infog[0]));
     for (int stream : {1, 2, 3}) icntl(stream) = -1;  // no output: the component logs through FMI only
@@ -111,7 +87,7 @@ class Mumps final : public SchurFactorization::Backend {
   }
   ~Mumps() override {
     id_.job = kTerminate;
-    MumpsApi<Real>::run(id_);
+    dmumps_c(&id_);
   }
 
   void factorize(const CsrMatrix& A, std::span<const double> scale, const std::vector<std::int64_t>& schurUnknowns,
@@ -155,29 +131,14 @@ class Mumps final : public SchurFactorization::Backend {
       analyzed_ = true;
     }
     const std::size_t z = schurUnknowns_.size();
-    // MUMPS writes S in Real: in place when that is double; in single precision the double copy is made only
-    // after the factorization, whose peak sets the run's (72 MB for a zone of 3000 unknowns).
-    std::vector<Real> narrow;
-    schur = std::vector<double>();
-    if constexpr (std::is_same_v<Real, double>) {
-      schur.assign(z * z, 0.0);
-      id_.schur = z > 0 ? schur.data() : nullptr;
-    } else {
-      narrow.assign(z * z, Real(0));
-      id_.schur = z > 0 ? narrow.data() : nullptr;
-    }
+    schur.assign(z * z, 0.0);
+    id_.schur = z > 0 ? schur.data() : nullptr;
     id_.schur_lld = static_cast<int>(z);
     call(kFactorize, "numeric factorization");
     id_.a = nullptr;  // the solves do not read A (no iterative refinement or error analysis: ICNTL(10), (11) = 0)
     id_.schur = nullptr;
     factorEntries = id_.infog[28] >= 0 ? id_.infog[28] : -static_cast<std::int64_t>(id_.infog[28]) * 1000000;
-    // By rows -> column-major (in place, or widened from the Real copy).
-    if constexpr (std::is_same_v<Real, double>) {
-      transposeInPlace(schur, z);
-    } else {
-      schur.assign(z * z, 0.0);
-      transposeWiden(narrow, schur, z);
-    }
+    transposeInPlace(schur, z);  // by rows -> column-major
   }
 
   void condense(std::span<const double> b, std::span<double> reduced) override {
@@ -225,7 +186,7 @@ class Mumps final : public SchurFactorization::Backend {
     for (int attempt = 0;; ++attempt) {
       if (job == kFactorize) useWorkspace();
       id_.job = job;
-      MumpsApi<Real>::run(id_);
+      dmumps_c(&id_);
       if (job == kAnalyze && id_.infog[0] >= 0)  // INFO(8): entries of S, in millions when negative
         workspaceEstimate_ = id_.info[7] >= 0 ? id_.info[7] : -static_cast<std::int64_t>(id_.info[7]) * 1000000;
       // -8/-9: the estimated workspace was too small (more delayed pivots than analysed): grow it, retry.
@@ -268,13 +229,41 @@ class Mumps final : public SchurFactorization::Backend {
   }
 
   Workspace workspace_;  // outlives the MUMPS instance: the destructor terminates MUMPS first
-  Struc id_{};
+  DMUMPS_STRUC_C id_{};
   std::vector<int> rowIndex_, colIndex_;  // 1-based coordinates of A's entries
   std::vector<std::int64_t> schurUnknowns_;
   std::vector<int> schurList_, position_;  // 1-based, for MUMPS
   std::vector<Real> rhs_;
   bool analyzed_ = false;
   std::int64_t workspaceEstimate_ = 0;  // MUMPS' estimate of S after the analysis, entries
+};
+
+// Single precision: the project's own multifrontal LU (solvers/multifrontal_lu.hpp), whose substitutions read
+// the factors at the memory bound; MUMPS' own single-precision solves read them at a third of it (bench/README).
+class OwnFrontal final : public SchurFactorization::Backend {
+ public:
+  void factorize(const CsrMatrix& A, std::span<const double> scale, const std::vector<std::int64_t>& schurUnknowns,
+                 const std::vector<std::int32_t>& position) override {
+    if (!lu_.analyzed() || schurUnknowns != schurUnknowns_ || position != position_) {
+      schurUnknowns_ = schurUnknowns;
+      position_ = position;
+      lu_.analyze(A, position_, schurUnknowns_.size(), schurUnknowns_);
+    }
+    lu_.factorize(A, scale, schur);
+    factorEntries = lu_.factorEntries();
+  }
+  void condense(std::span<const double> b, std::span<double> reduced) override { lu_.condense(b, reduced); }
+  void expand(std::span<const double> xZ, std::span<double> x) override { lu_.expand(xZ, x); }
+  void solve(std::span<const double> b, std::span<double> x) override {
+    lu_.solve(b, x);
+    for (double v : x)
+      if (!std::isfinite(v)) throw SolverFailure("multifrontal LU: solution is not finite (singular system?)");
+  }
+
+ private:
+  MultifrontalLu lu_;
+  std::vector<std::int64_t> schurUnknowns_;
+  std::vector<std::int32_t> position_;
 };
 
 }  // namespace
@@ -284,9 +273,9 @@ SchurFactorization::SchurFactorization(FactorPrecision precision) { setPrecision
 void SchurFactorization::setPrecision(FactorPrecision precision) {
   precision_ = precision;
   if (precision == FactorPrecision::Single)
-    backend_ = std::make_unique<Mumps<float>>();
+    backend_ = std::make_unique<OwnFrontal>();
   else
-    backend_ = std::make_unique<Mumps<double>>();
+    backend_ = std::make_unique<Mumps>();
 }
 
 SchurFactorization::~SchurFactorization() = default;

@@ -1,5 +1,5 @@
 #pragma once
-// Sparse LU of A with a chosen set of unknowns Z eliminated last (MUMPS, sequential): the factors of the
+// Sparse LU of A with a chosen set of unknowns Z eliminated last: the factors of the
 // rest, A_FF, and the dense Schur complement S = A_ZZ - A_ZF A_FF^-1 A_FZ. When only the Z x Z block of A
 // changes, A_new x = b is solved with the same factors and S + (A_new - A)_ZZ: the fracture driver puts the
 // crack zone in Z, so that the bonds breaking there never require a new sparse factorization.
@@ -12,7 +12,8 @@
 
 namespace peristep {
 
-// Precision of the sparse factors (MUMPS' dmumps or smumps). The interface is double either way: A, S and
+// Precision of the sparse factors: double (MUMPS' dmumps, sequential, with threshold pivoting) or single (the
+// project's multifrontal LU without pivoting, solvers/multifrontal_lu.hpp). The interface is double either way: A, S and
 // the vectors are converted at the boundary, so single-precision factors give an approximate solve that
 // the caller refines in double (solvers/crack_zone_solver.hpp).
 enum class FactorPrecision { Double, Single };
@@ -38,7 +39,7 @@ class SchurFactorization {
   // S, column-major, size |Z| x |Z|.
   const std::vector<double>& schurComplement() const;
   std::vector<double> takeSchurComplement();
-  // Entries of the sparse factors of the last factorization (MUMPS' INFOG(29)).
+  // Entries of the sparse factors of the last factorization (MUMPS' INFOG(29), or the LU's own count).
   std::int64_t factorEntries() const;
 
   // First half of a solve: the reduced right-hand side b_Z - A_ZF A_FF^-1 b_F (size |Z|). The solver keeps
