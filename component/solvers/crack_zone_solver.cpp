@@ -131,7 +131,7 @@ void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> cor
   for (std::int64_t r = 0; r < A.rows; ++r)
     for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
       if (A.col[k] == r && A.value[k] != 0.0) scale_[static_cast<std::size_t>(r)] = 1.0 / std::sqrt(std::abs(A.value[k]));
-  // The last zone's matrix and dense solver go first: MUMPS' factorization sets the run's peak memory.
+  // The last zone's matrix and dense solver go first: the sparse factorization sets the run's peak memory.
   factored_ = {};
   dense_.release();
 #if defined(__GLIBC__)

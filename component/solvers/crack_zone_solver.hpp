@@ -2,7 +2,7 @@
 // Solves the fracture system A x = b while bonds break, with one sparse factorization per crack zone.
 // The zone is a set of core points whose rows may change (bonds may break there) and the points within
 // delta of them (the columns of those rows). Its unknowns Z are eliminated last: the sparse factors of the
-// rest and the dense Schur complement S come from one MUMPS factorization; a change of a zone row within the
+// rest and the dense Schur complement S come from one sparse factorization (SchurFactorization); a change of a zone row within the
 // zone's columns (any change of a core row; of the other zone rows, e.g. the free-surface term of a point
 // near a break, 000:(3.19)) changes only the Z x Z block, so the solve uses S + (A - A_factored)_ZZ
 // (DenseRowUpdateSolver) and the same sparse factors. A change beyond that needs a new zone and factorization.
@@ -96,7 +96,7 @@ class CrackZoneSolver {
   // The factorized matrix's entries (its pattern is every later matrix's): the changes are measured from them.
   std::vector<double> factored_;
   // Symmetric diagonal scaling D = |diag A|^-1/2 of the factorized matrix: the u rows are ~1e20 times the
-  // theta rows, and MUMPS factorizes D A D (its own scaling is off when a Schur complement is asked for).
+  // theta rows, and the sparse LU factorizes D A D (neither it nor MUMPS scales when a Schur complement is asked for).
   std::vector<double> scale_;
   SchurFactorization sparse_;
   DenseRowUpdateSolver dense_;

@@ -73,6 +73,25 @@ Graph symmetricGraph(const CsrMatrix& A, const std::vector<Index>& label) {
   return g;
 }
 
+// The graph of positions as a graph of internal indices (unknown u has position[u] and internal[u]).
+Graph relabelled(const Graph& g, const std::vector<Index>& position, const std::vector<Index>& internal) {
+  const std::size_t n = position.size();
+  std::vector<Index> toInternal(n);
+  for (std::size_t u = 0; u < n; ++u) toInternal[static_cast<std::size_t>(position[u])] = internal[u];
+  std::vector<Index> fromInternal(n);
+  for (std::size_t q = 0; q < n; ++q) fromInternal[static_cast<std::size_t>(toInternal[q])] = static_cast<Index>(q);
+  Graph h;
+  h.start.assign(n + 1, 0);
+  for (std::size_t v = 0; v < n; ++v) h.start[v + 1] = h.start[v] + static_cast<std::int64_t>(g.of(fromInternal[v]).size());
+  h.adj.resize(g.adj.size());
+#pragma omp parallel for schedule(static)
+  for (std::size_t v = 0; v < n; ++v) {
+    Index* out = h.adj.data() + h.start[v];
+    for (Index q : g.of(fromInternal[v])) *out++ = toInternal[static_cast<std::size_t>(q)];
+  }
+  return h;
+}
+
 // C -= A B (A m x k, B k x n, column-major): BLAS for large products, plain loops for the many small ones
 // at the leaves of the tree, where a BLAS call costs more than its flops.
 void subtractProduct(int m, int n, int k, const float* a, int lda, const float* b, int ldb, float* c, int ldc) {
@@ -248,7 +267,7 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
       parent[static_cast<std::size_t>(postRank[j])] = postRank[static_cast<std::size_t>(treeParent[j])];
   treeParent = {};
   ancestor = {};
-  g = symmetricGraph(A, internal_);
+  g = relabelled(g, position, internal_);
 
   // Column counts of L (rows below the diagonal, Z rows included) from the row subtrees.
   std::vector<std::int64_t> count(nF, 0);
@@ -614,7 +633,7 @@ void MultifrontalLu::forward() {
   float* w = work_.data();
   const auto n = static_cast<std::size_t>(n_);
   outside_.assign(2 * n, 0.0f);
-#pragma omp parallel num_threads(2)
+#pragma omp parallel
   {
     std::vector<float> f;
     for (int g = omp_get_thread_num(); g < 2; g += omp_get_num_threads())
@@ -631,7 +650,7 @@ void MultifrontalLu::backward() {
   float* w = work_.data();
   std::vector<float> xb;
   for (std::size_t k = above_.size(); k-- > 0;) backwardNode(static_cast<std::size_t>(above_[k]), w, xb);
-#pragma omp parallel num_threads(2)
+#pragma omp parallel
   {
     std::vector<float> x;
     for (int g = omp_get_thread_num(); g < 2; g += omp_get_num_threads())
