@@ -505,7 +505,6 @@ void MultifrontalLu::splitForSubstitutions() {
     group_[static_cast<std::size_t>(nodeGroup[s])].push_back(static_cast<Index>(s));
     std::fill(owner_.begin() + first_[s], owner_.begin() + first_[s + 1], nodeGroup[s]);
   }
-
 }
 
 void MultifrontalLu::factorize(const CsrMatrix& A, std::span<const double> scale, std::vector<double>& schur) {
