@@ -22,6 +22,7 @@
 // --png draws the final damage over the microstructure with the host's colours (the picture
 // `peristep run` leaves), so one long run yields both the numbers and the picture.
 // h = 2 um is the paper's full size (413 x 213 = 87969 points with the collar).
+#include <dlfcn.h>
 #include <malloc.h>
 
 #include <algorithm>
@@ -187,8 +188,12 @@ int main(int argc, char** argv) try {
   // The timing's solver (UMFPACK: ~4 GB at h = 2 um) may set the process' peak: the run's own is counted apart.
   const std::size_t setupPeak = peakMemoryBytes();
   const bool runPeakKnown = resetPeakMemory();
-  std::printf("# driver: %s, %s factors; one factorization of the initial matrix (%s) %.2f s (median of 3)\n",
-              driver.c_str(), factors.c_str(), solver.c_str(), factorizationSeconds);
+  // The kernels set the speed of every dense product (process_settings.hpp): say which ran.
+  using CoreName = const char* (*)();
+  const auto coreName = reinterpret_cast<CoreName>(dlsym(RTLD_DEFAULT, "openblas_get_corename"));
+  std::printf("# driver: %s, %s factors; one factorization of the initial matrix (%s) %.2f s (median of 3); "
+              "OpenBLAS kernels %s\n",
+              driver.c_str(), factors.c_str(), solver.c_str(), factorizationSeconds, coreName ? coreName() : "(not OpenBLAS)");
   Progress run;
   run.options = {hUm, fraction, stepUm, seed, spec.reuse, spec.zonePrecision};
   const bool resumed = !checkpointPath.empty() && std::filesystem::exists(checkpointPath);

@@ -10,6 +10,10 @@
 //   of each page is a fault (h = 4 um, f = 0.8: 4.4 million faults; with huge pages 0.26 million and 14% less
 //   wall time; bench/README.md, "Issue 14, session 31"). The component itself leaves the importer's allocator
 //   alone; the programs that own the process ask for it.
+// - OpenBLAS' kernels: Debian 12's OpenBLAS 0.3.21 picks them by CPU model and falls back to its SSE3 (Prescott)
+//   kernels on models it does not know (Intel Xeon model 207: sgemm at n = 2000 on two cores 65 GFlop/s, with
+//   SkylakeX' kernels 318; bench/README.md, "Issue 14, session 43"). The kernels are chosen here by the CPU's
+//   features, as later OpenBLAS releases do for models they do not know.
 // The program starts itself afresh when this set anything (glibc reads its tunables at start).
 #include <unistd.h>
 
@@ -18,12 +22,23 @@
 
 namespace peristep {
 
+// The OpenBLAS kernel set for this CPU's vector units, or nullptr to leave the choice to OpenBLAS.
+inline const char* openBlasKernelsForCpu() {
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") &&
+      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512cd"))
+    return "SkylakeX";
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return __builtin_cpu_is("amd") ? "Zen" : "Haswell";
+  return nullptr;
+}
+
 // Sets the variables the user did not set; true if it set any.
 inline bool preferProcessSettings() {
   bool set = false;
   for (const auto& [name, value] : {std::pair{"OMP_WAIT_POLICY", "passive"}, std::pair{"OPENBLAS_THREAD_TIMEOUT", "4"},
-                                    std::pair{"GLIBC_TUNABLES", "glibc.malloc.hugetlb=1"}})
-    if (!std::getenv(name)) {
+                                    std::pair{"GLIBC_TUNABLES", "glibc.malloc.hugetlb=1"},
+                                    std::pair{"OPENBLAS_CORETYPE", openBlasKernelsForCpu()}})
+    if (value && !std::getenv(name)) {
       setenv(name, value, 0);
       set = true;
     }
