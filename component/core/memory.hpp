@@ -4,6 +4,14 @@
 
 namespace peristep {
 
+// Empties a container and returns its storage to the allocator. (v = {} would not: for a std::vector it
+// assigns an empty list and keeps the capacity, which held 1.2 GB of old factors through the next
+// factorization at h = 2 um; bench/README.md, "Issue 14, session 43".)
+template <class Container>
+void freeStorage(Container& c) {
+  Container().swap(c);
+}
+
 // Peak resident set size in bytes since start or since the last resetPeakMemory().
 std::size_t peakMemoryBytes();
 // Restart the peak count (Linux >= 4.0); returns false where the kernel does not allow it.

@@ -8,6 +8,7 @@
 #endif
 
 #include "core/errors.hpp"
+#include "core/memory.hpp"
 #include "solvers/metis_ordering.hpp"
 
 namespace peristep {
@@ -132,7 +133,7 @@ void CrackZoneSolver::factorize(const CsrMatrix& A, std::vector<std::size_t> cor
     for (std::int64_t k = A.rowStart[r]; k < A.rowStart[r + 1]; ++k)
       if (A.col[k] == r && A.value[k] != 0.0) scale_[static_cast<std::size_t>(r)] = 1.0 / std::sqrt(std::abs(A.value[k]));
   // The last zone's matrix and dense solver go first: the sparse factorization sets the run's peak memory.
-  factored_ = {};
+  freeStorage(factored_);
   dense_.release();
 #if defined(__GLIBC__)
   // Freed blocks inside the heap stay resident (Krylov vectors, rows, the last zone's arrays); return them

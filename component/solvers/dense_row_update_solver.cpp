@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "core/memory.hpp"
 
 extern "C" {
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
@@ -35,15 +36,15 @@ void DenseRowUpdateSolver::reset(std::vector<double> S) {
 
 void DenseRowUpdateSolver::release() {
   n_ = 0;
-  S_ = {};
-  lu_ = {};
-  W_ = {};
-  pivots_ = {};
-  rows_ = {};
-  updated_ = {};
-  blockEnds_ = {};
-  capacitance_ = {};
-  capacitancePivots_ = {};
+  freeStorage(S_);
+  freeStorage(lu_);
+  freeStorage(W_);
+  freeStorage(pivots_);
+  freeStorage(rows_);
+  freeStorage(updated_);
+  freeStorage(blockEnds_);
+  freeStorage(capacitance_);
+  freeStorage(capacitancePivots_);
   capacitanceRows_ = 0;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/memory.hpp"
 
 extern "C" {
 void sgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const float* alpha,
@@ -212,6 +213,8 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
           "multifrontal LU: square matrix and one position per unknown");
   require(A.nonZeros() < std::numeric_limits<Index>::max(), "multifrontal LU: too many entries");
   require(schurUnknowns.size() == schurCount, "multifrontal LU: Schur list and count differ");
+  // The last factors are of no use after a new analysis: free them before its arrays come on top.
+  freeStorage(factors_);
   n_ = A.rows;
   z_ = static_cast<std::int64_t>(schurCount);
   nF_ = n_ - z_;
@@ -265,8 +268,8 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
   for (std::size_t j = 0; j < nF; ++j)
     if (treeParent[j] != -1)
       parent[static_cast<std::size_t>(postRank[j])] = postRank[static_cast<std::size_t>(treeParent[j])];
-  treeParent = {};
-  ancestor = {};
+  freeStorage(treeParent);
+  freeStorage(ancestor);
   g = relabelled(g, position, internal_);
 
   // Column counts of L (rows below the diagonal, Z rows included) from the row subtrees.
@@ -425,7 +428,7 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
     for (std::size_t e = 0; e < nnz; ++e)
       if (owner[e] != -1) {
         const auto at = static_cast<std::size_t>(cursor[static_cast<std::size_t>(owner[e])]++);
-        ownEntry_[at] = static_cast<std::int64_t>(e);
+        ownEntry_[at] = static_cast<Index>(e);
         ownOffset_[at] = offset[e];
       }
   }
@@ -539,6 +542,7 @@ void MultifrontalLu::factorize(const CsrMatrix& A, std::span<const double> scale
       for (std::int64_t ic = 0; ic < rc; ++ic)
         schur[static_cast<std::size_t>(idx[ic] - nF_) + static_cast<std::size_t>(idx[jc] - nF_) * z] += cb[ic + jc * rc];
   }
+  freeStorage(stack_);  // the substitutions do not need it
 }
 
 // Supernode s: its front assembled from A's entries and its children's contribution blocks, factorized, its

@@ -52,7 +52,8 @@ class MultifrontalLu {
   std::vector<std::int32_t> childStart_, children_;
   // A's entries, grouped by the supernode whose front receives them, with their offset in that front;
   // entries in Z x Z go to S.
-  std::vector<std::int64_t> ownStart_, ownEntry_;
+  std::vector<std::int64_t> ownStart_;
+  std::vector<Index> ownEntry_;  // fits: analyze() requires fewer than 2^31 entries
   std::vector<std::int32_t> ownOffset_;
   std::vector<std::int64_t> schurEntry_, schurOffset_;
   std::int64_t factorEntries_ = 0, maxFront_ = 0, stackPeak_ = 0;
@@ -60,7 +61,8 @@ class MultifrontalLu {
   // owner_ of each unknown: its group, or -1 (above, or Z).
   std::vector<Index> group_[2], above_;
   std::vector<std::int8_t> owner_;
-  std::vector<float> factors_, stack_, work_, outside_;  // stack_: the contribution blocks waiting for their parent
+  std::vector<float> factors_, work_, outside_;
+  std::vector<float> stack_;  // during factorize(): the contribution blocks waiting for their parent
   std::vector<std::int64_t> place_;  // where a supernode's contribution block is on stack_
 };
 
