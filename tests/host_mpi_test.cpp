@@ -134,6 +134,7 @@ TEST_CASE("mpi: a study killed part-way under mpirun and restarted recomputes no
   TempDir dir;
   writeText(dir / "t1.toml", smallScene("smooth_sampling.toml", 17));
   const std::vector<std::string> args{"t1.toml", "--rule", "tensor", "--level", "12", "--out", "study.h5"};
+  const ScopedEnv tmp("TMPDIR", privateTmp(dir).string());
   const ProcessResult killed = mpirun(dir.path(), args, 2);  // each rank ends after its 2nd sample
   INFO("killed run:\n" << killed.out << killed.err);
   CHECK(killed.exitCode != 0);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -140,6 +141,7 @@ TEST_CASE("peristep sample: a loop killed part-way recomputes no finished sample
       for (const auto& e : fs::directory_iterator(dir / "study.samples")) n += e.path().extension() == ".bin";
     return n;
   };
+  std::optional<ScopedEnv> tmp(std::in_place, "TMPDIR", privateTmp(dir).string());
   const pid_t pid = fork();
   if (pid == 0) {
     const int devnull = open("/dev/null", O_WRONLY);
@@ -161,9 +163,13 @@ TEST_CASE("peristep sample: a loop killed part-way recomputes no finished sample
   REQUIRE(done >= 3);
   REQUIRE(done < 16);  // killed part-way (16 samples take several seconds)
 
+  const auto leftBehind = std::distance(fs::directory_iterator(dir / "tmp"), {});
+  CHECK(leftBehind == 1);  // the killed run's unpacked FMU
   const ProcessResult resumed = runProcess(args, dir.path());
   INFO(resumed.out << resumed.err);
   REQUIRE(resumed.exitCode == 0);
+  CHECK(std::distance(fs::directory_iterator(dir / "tmp"), {}) == leftBehind);  // a run that ends removes its own
+  tmp.reset();
     const auto rows = readStudyCsv(dir / "study.csv");
   REQUIRE(rows.size() == 1);
   CHECK(rows[0].computed == static_cast<double>(16 - done));

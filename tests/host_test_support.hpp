@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -37,6 +38,28 @@ class TempDir {
  private:
   fs::path path_;
 };
+
+// An environment variable set for a scope (children started in it inherit it), then restored.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnv() { old_ ? setenv(name_, old_->c_str(), 1) : unsetenv(name_); }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+// A killed host cannot remove the FMU it unpacked: tests that kill one point its TMPDIR here.
+inline fs::path privateTmp(const TempDir& dir) {
+  fs::create_directories(dir / "tmp");
+  return dir / "tmp";
+}
 
 inline std::string readText(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
