@@ -253,8 +253,8 @@ TEST_CASE("a collar gradient that cannot apply is refused with one precise messa
 TEST_CASE("an elastic specimen with a floating island leaves it at rest, and every value finite",
           "[abi][specimen]") {
   // A Void ring (wider than the horizon) cuts an island out of the plate: nothing holds it and nothing loads
-  // it, so of its rigid motions the solve keeps the one of no load: none. (The fracture model holds such
-  // pieces by its springs; a system the solver cannot solve is refused: "solution is not finite".)
+  // it; the set-up holds it at rest (models/unheld_pieces.hpp) instead of leaving a singular block to the
+  // solver. (The fracture model holds such pieces by its springs.)
   const auto onIsland = [](std::size_t i) {
     const double x = -1.0 + 0.1 * static_cast<double>(i % kNx), y = -0.8 + 0.1 * static_cast<double>(i / kNx);
     return std::hypot(x, y) <= 0.25;

@@ -1,8 +1,10 @@
 // Non-physical or inconsistent input is refused with a precise message before any work is done.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <string>
 
 #include "core/errors.hpp"
+#include "fracture/bond_state.hpp"
 #include "scenes/manufactured.hpp"
 #include "scenes/scene_model.hpp"
 #include "solvers/static_lps.hpp"
@@ -30,6 +32,15 @@ class NegativeModulus final : public ElasticScene {
   double poissonRatio() const override { return 0.3; }
   double youngsModulus(double x, double) const override { return x > 0.25 ? -1.0 : 1.0; }
   Vec2 bodyForce(double, double) const override { return {0, 0}; }
+  Vec2 displacement(double, double) const override { return {0, 0}; }
+};
+
+// A uniform material under its own weight.
+class Weight final : public ElasticScene {
+ public:
+  double poissonRatio() const override { return 0.3; }
+  double youngsModulus(double, double) const override { return 1.0; }
+  Vec2 bodyForce(double, double) const override { return {0, -1}; }
   Vec2 displacement(double, double) const override { return {0, 0}; }
 };
 
@@ -87,6 +98,23 @@ TEST_CASE("a non-positive Young's modulus is rejected with its location", "[vali
   auto d = std::make_shared<const LpsDiscretization>(LpsDiscretization::build(g));
   const NegativeModulus scene;
   REQUIRE_THROWS_WITH(StaticLps(d, scene), Contains("Young's modulus must be positive") && Contains(" at ("));
+}
+
+TEST_CASE("a piece that pre-cracks cut loose is refused when a body force loads it", "[validation]") {
+  GridSpec g;
+  g.nx = g.ny = 17;
+  auto d = std::make_shared<const LpsDiscretization>(LpsDiscretization::build(g));
+  const PointCloud& c = d->cloud;
+  double lo = c.x[c.domain.front()], hi = lo;
+  for (std::size_t p : c.domain) lo = std::min(lo, c.x[p]), hi = std::max(hi, c.x[p]);
+  // A square whose sides and corners miss the lattice's points and bonds' lines (the domain is square).
+  const double x0 = lo + 0.3 * (hi - lo) + 0.010, x1 = lo + 0.7 * (hi - lo) + 0.010;
+  const double y0 = lo + 0.3 * (hi - lo) + 0.023, y1 = lo + 0.7 * (hi - lo) + 0.023;
+  const std::vector<Segment> square{{x0, y0, x1, y0}, {x1, y0, x1, y1}, {x1, y1, x0, y1}, {x0, y1, x0, y0}};
+  const Weight scene;
+  REQUIRE_NOTHROW(StaticLps(d, scene));
+  REQUIRE_THROWS_WITH(StaticLps(d, scene, LinearSolverKind::Umfpack, intactBonds(c, d->neighbours, square)),
+                      Contains("no bond holds to the collar carries a body force") && Contains(" at ("));
 }
 
 TEST_CASE("a linear solver is chosen by its one name, an unknown name is refused", "[validation][solvers]") {

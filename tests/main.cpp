@@ -1,7 +1,6 @@
 // Catch's main, started with the OpenBLAS kernels the host chooses for the CPU (host/process_settings.hpp), so
-// that the tests run the kernels a user of the host runs. The choice matters beyond speed: with the SSE3 kernels
-// Debian 12's OpenBLAS falls back to on CPU models it does not know, the floating island's singular solve
-// (tests/fmi_elastic_specimen_test.cpp) rounds to 0/0 and initialization is refused (session 43).
+// that the tests run the kernels a user of the host runs (the SSE3 fall-back of Debian 12's OpenBLAS on CPU models
+// it does not know rounds differently; tests/CMakeLists.txt runs the test it once failed with those kernels).
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 #include <unistd.h>

@@ -18,7 +18,7 @@ class InterfaceCrackExact final : public ElasticScene {
  public:
   InterfaceCrackExact(double nu, double xi1, double xi2, double h);
   double poissonRatio() const override { return nu_; }
-  double youngsModulus(double x, double y) const override { return y > -tiny_ ? E1_ : E2_; }
+  double youngsModulus(double, double y) const override { return y > -tiny_ ? E1_ : E2_; }
   Vec2 bodyForce(double, double) const override { return {0.0, 0.0}; }
   Vec2 displacement(double x, double y) const override;
 

@@ -7,6 +7,7 @@
 #include "core/timer.hpp"
 #include "models/collar_force.hpp"
 #include "models/lps_material.hpp"
+#include "models/unheld_pieces.hpp"
 
 namespace peristep {
 
@@ -40,8 +41,17 @@ StaticLps::StaticLps(std::shared_ptr<const LpsDiscretization> disc, const Elasti
     }
   }
   times_.assembly = clock.lap();
-  setUp(solver);
+  const std::vector<std::size_t> unheld = setUp(solver);
   clock.lap();
+  for (std::size_t p : unheld) {
+    const Vec2 f = scene.bodyForce(c.x[p], c.y[p]);
+    if (f[0] != 0.0 || f[1] != 0.0) {
+      std::ostringstream msg;
+      msg << "a piece of the specimen that no bond holds to the collar carries a body force at (" << c.x[p] << ", "
+          << c.y[p] << "): it has no equilibrium";
+      throw InvalidInput(msg.str());
+    }
+  }
   // Body force on the momentum rows.
   for (std::size_t p : c.domain) {
     const Vec2 f = scene.bodyForce(c.x[p], c.y[p]);
@@ -60,7 +70,7 @@ StaticLps::StaticLps(std::shared_ptr<const LpsDiscretization> disc, StaticLoadin
   setUp(solver);
 }
 
-void StaticLps::setUp(LinearSolverKind solver) {
+std::vector<std::size_t> StaticLps::setUp(LinearSolverKind solver) {
   const DofMap& d = disc_->dofs;
   Stopwatch clock;
   const std::vector<std::uint8_t>* intact = loading_.intact.empty() ? nullptr : &loading_.intact;
@@ -69,12 +79,15 @@ void StaticLps::setUp(LinearSolverKind solver) {
   rhs0_.assign(static_cast<std::size_t>(d.size), 0.0);
   system_.B.multiply(loading_.unitCollar, rhs0_);
   for (double& v : rhs0_) v = -v;
+  std::vector<std::size_t> unheld = unheldPoints(disc_->cloud, disc_->neighbours, intact);
+  holdAtRest(system_.A, d, unheld);
   times_.assembly += clock.lap();
 
   solver_ = makeLinearSolver(solver);
   solver_->analyze(system_.A);
   solver_->factorize(system_.A);
   times_.factorization = clock.lap();
+  return unheld;
 }
 
 void StaticLps::solve(double loadFactor) {

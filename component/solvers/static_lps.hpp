@@ -56,7 +56,8 @@ class StaticLps {
   std::array<double, 2> collarForce(const std::vector<std::uint8_t>& collar) const;
 
  private:
-  void setUp(LinearSolverKind solver);
+  // Assembles and factorizes; returns the points of pieces that nothing holds (held at rest).
+  std::vector<std::size_t> setUp(LinearSolverKind solver);
 
   std::shared_ptr<const LpsDiscretization> disc_;
   const ElasticScene* scene_ = nullptr;
