@@ -81,6 +81,8 @@ class CrackZoneSolver {
   void solveOnce(std::span<const double> b, std::span<double> x);
   void solveScaled(std::span<const double> b, std::span<double> y);
   std::vector<std::int64_t> zoneUnknowns() const;
+  // All points with unknowns in nested-dissection order of their neighbour graph (the pattern of every A).
+  std::vector<std::size_t> dissectionOrder() const;
   std::vector<std::int32_t> pivotOrder() const;
   enum class RowChange { None, InZone, BeyondZone };
   // The change (A - factored) of row `row` on the zone's columns, and where the row changed at all.
@@ -101,6 +103,7 @@ class CrackZoneSolver {
   SchurFactorization sparse_;
   DenseRowUpdateSolver dense_;
   std::vector<std::size_t> core_, extra_;
+  std::vector<std::size_t> dissection_;  // dissectionOrder(), from the first factorize() on
   std::vector<std::int64_t> zone_;       // zone unknowns, ascending
   std::vector<std::int32_t> zoneIndex_;  // per unknown: position in zone_, -1 outside
   std::vector<std::uint8_t> takesUp_;    // per zone row: its changes within the zone go to the dense solver

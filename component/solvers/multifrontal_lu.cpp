@@ -272,19 +272,47 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
   freeStorage(ancestor);
   g = relabelled(g, position, internal_);
 
-  // Column counts of L (rows below the diagonal, Z rows included) from the row subtrees.
+  // Column counts of L (rows below the diagonal, Z rows included): Gilbert, Ng and Peyton's skeleton
+  // algorithm (as in CSparse's cs_counts) in O(|A|), where walking each row's subtree cost O(|L|): 0.38 s per
+  // zone at h = 2 um. The labels are already a postorder. A virtual root nF above the forest's roots tops the
+  // row subtrees of the Z rows, which in the F forest end at its roots.
   std::vector<std::int64_t> count(nF, 0);
   {
-    std::vector<Index> mark(nF, -1);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i < nF) mark[i] = static_cast<Index>(i);
-      for (Index k : g.of(static_cast<std::int64_t>(i)))
-        for (; k != -1 && static_cast<std::size_t>(k) < std::min(i, nF) && mark[static_cast<std::size_t>(k)] != static_cast<Index>(i);
-             k = parent[static_cast<std::size_t>(k)]) {
-          mark[static_cast<std::size_t>(k)] = static_cast<Index>(i);
-          ++count[static_cast<std::size_t>(k)];
-        }
+    const std::size_t root = nF;
+    std::vector<Index> up(nF + 1, -1), first(nF + 1, -1), ancestor(nF + 1), maxFirst(n, -1), prevLeaf(n, -1);
+    std::vector<std::int64_t> delta(nF + 1, 0);
+    for (std::size_t j = 0; j < nF; ++j) up[j] = parent[j] == -1 ? static_cast<Index>(root) : parent[j];
+    for (std::size_t k = 0; k <= nF; ++k) {
+      delta[k] = first[k] == -1 ? 1 : 0;  // an etree leaf: its row has only the diagonal
+      for (Index j = static_cast<Index>(k); j != -1 && first[static_cast<std::size_t>(j)] == -1; j = up[static_cast<std::size_t>(j)])
+        first[static_cast<std::size_t>(j)] = static_cast<Index>(k);
+      ancestor[k] = static_cast<Index>(k);
     }
+    for (std::size_t j = 0; j < nF; ++j) {
+      --delta[static_cast<std::size_t>(up[j])];
+      for (Index i : g.of(static_cast<std::int64_t>(j))) {
+        const auto row = static_cast<std::size_t>(i);
+        // Is j a leaf of row i's subtree (no column of it in j's subtree seen yet)?
+        if (row <= j || first[j] <= maxFirst[row]) continue;
+        maxFirst[row] = first[j];
+        const Index previous = prevLeaf[row];
+        prevLeaf[row] = static_cast<Index>(j);
+        ++delta[j];
+        if (previous == -1) continue;
+        // Overlap with the path from the previous leaf: subtract at their lowest common ancestor.
+        Index q = previous;
+        while (q != ancestor[static_cast<std::size_t>(q)]) q = ancestor[static_cast<std::size_t>(q)];
+        for (Index s = previous; s != q;) {
+          const Index next = ancestor[static_cast<std::size_t>(s)];
+          ancestor[static_cast<std::size_t>(s)] = q;
+          s = next;
+        }
+        --delta[static_cast<std::size_t>(q)];
+      }
+      ancestor[j] = up[j];
+    }
+    for (std::size_t j = 0; j < nF; ++j) delta[static_cast<std::size_t>(up[j])] += delta[j];
+    for (std::size_t j = 0; j < nF; ++j) count[j] = delta[j] - 1;
   }
   // Fundamental supernodes: chains j -> j + 1 where j is the only child and the structure just shrinks by one.
   std::vector<Index> childCount(nF, 0);
