@@ -153,9 +153,7 @@ std::vector<std::size_t> CrackZoneSolver::dissectionOrder() const {
   std::vector<std::int32_t> vertex(n, -1);
   std::vector<std::size_t> points;
   for (std::size_t p = 0; p < n; ++p) {
-    bool hasUnknowns = false;
-    dofs_.forEachRow(p, [&](std::int64_t) { hasUnknowns = true; });
-    if (!hasUnknowns) continue;
+    if (dofs_.u[p] < 0 && dofs_.theta[p] < 0) continue;  // no unknowns
     vertex[p] = static_cast<std::int32_t>(points.size());
     points.push_back(p);
   }

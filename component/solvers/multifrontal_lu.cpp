@@ -279,14 +279,15 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
   std::vector<std::int64_t> count(nF, 0);
   {
     const std::size_t root = nF;
-    std::vector<Index> up(nF + 1, -1), first(nF + 1, -1), ancestor(nF + 1), maxFirst(n, -1), prevLeaf(n, -1);
+    // link: union-find towards the lowest common ancestor of two leaves of a row subtree.
+    std::vector<Index> up(nF + 1, -1), first(nF + 1, -1), link(nF + 1), maxFirst(n, -1), prevLeaf(n, -1);
     std::vector<std::int64_t> delta(nF + 1, 0);
     for (std::size_t j = 0; j < nF; ++j) up[j] = parent[j] == -1 ? static_cast<Index>(root) : parent[j];
     for (std::size_t k = 0; k <= nF; ++k) {
       delta[k] = first[k] == -1 ? 1 : 0;  // an etree leaf: its row has only the diagonal
       for (Index j = static_cast<Index>(k); j != -1 && first[static_cast<std::size_t>(j)] == -1; j = up[static_cast<std::size_t>(j)])
         first[static_cast<std::size_t>(j)] = static_cast<Index>(k);
-      ancestor[k] = static_cast<Index>(k);
+      link[k] = static_cast<Index>(k);
     }
     for (std::size_t j = 0; j < nF; ++j) {
       --delta[static_cast<std::size_t>(up[j])];
@@ -301,15 +302,15 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
         if (previous == -1) continue;
         // Overlap with the path from the previous leaf: subtract at their lowest common ancestor.
         Index q = previous;
-        while (q != ancestor[static_cast<std::size_t>(q)]) q = ancestor[static_cast<std::size_t>(q)];
+        while (q != link[static_cast<std::size_t>(q)]) q = link[static_cast<std::size_t>(q)];
         for (Index s = previous; s != q;) {
-          const Index next = ancestor[static_cast<std::size_t>(s)];
-          ancestor[static_cast<std::size_t>(s)] = q;
+          const Index next = link[static_cast<std::size_t>(s)];
+          link[static_cast<std::size_t>(s)] = q;
           s = next;
         }
         --delta[static_cast<std::size_t>(q)];
       }
-      ancestor[j] = up[j];
+      link[j] = up[j];
     }
     for (std::size_t j = 0; j < nF; ++j) delta[static_cast<std::size_t>(up[j])] += delta[j];
     for (std::size_t j = 0; j < nF; ++j) count[j] = delta[j] - 1;
