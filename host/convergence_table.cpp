@@ -2,10 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
+#include <sstream>
 #include <string>
 
+#include "atomic_file.hpp"
 #include "host_errors.hpp"
 #include "progress.hpp"
 
@@ -32,8 +33,7 @@ PowerFit fitPowerLaw(const std::vector<LevelResult>& rows) {
 }
 
 void writeConvergenceCsv(const std::filesystem::path& file, const std::vector<LevelResult>& rows) {
-  std::ofstream out(file, std::ios::trunc);
-  if (!out) throw RunError(file.string() + ": cannot write the convergence table");
+  std::ostringstream out;
   out << "level,nx,ny,h,points,error_l2,rate,wall_s,peak_rss_mb\n";
   char line[256];
   for (const LevelResult& r : rows) {
@@ -43,7 +43,7 @@ void writeConvergenceCsv(const std::filesystem::path& file, const std::vector<Le
                   r.rate, r.wallSeconds, r.peakRssMb);
     out << line;
   }
-  if (!out) throw RunError(file.string() + ": cannot write the convergence table");
+  writeFileAtomically(file, out.str());
 }
 
 void printConvergenceTable(std::ostream& out, const std::vector<LevelResult>& rows) {

@@ -3,6 +3,7 @@
 #include <system_error>
 
 #include "host_errors.hpp"
+#include "output_lock.hpp"
 #include "xdmf_writer.hpp"
 
 namespace peristep::host {
@@ -23,8 +24,7 @@ fs::path partialName(const fs::path& file) {
 
 ResultFiles::ResultFiles(const fs::path& hdf5File, const ResultLayout& layout)
     : final_(hdf5File), partial_(partialName(hdf5File)), layout_(layout) {
-  if (hdf5File.has_parent_path() && !fs::is_directory(hdf5File.parent_path()))
-    throw InputError(hdf5File.string() + ": the output directory " + hdf5File.parent_path().string() + " does not exist");
+  requireOutputDirectory(hdf5File);
   writer_ = std::make_unique<Hdf5Writer>(partial_, layout);
 }
 

@@ -2,7 +2,8 @@
 // Where a run's results go. While the run lasts they are written to "<name>.partial.h5" and
 // "<name>.partial.xmf" next to the requested file; only a successful run renames them onto the
 // requested names. So a failing run never corrupts the results of an earlier one, and the steps it
-// did finish stay readable (HDF5 flushed, XDMF rewritten after every step).
+// did finish stay readable (HDF5 flushed, XDMF rewritten after every step). The caller holds the
+// output's OutputLock, so there is one writer per name.
 #include <filesystem>
 #include <memory>
 

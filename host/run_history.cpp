@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <sstream>
 
+#include "atomic_file.hpp"
 #include "gnuplot.hpp"
 #include "host_errors.hpp"
 
@@ -31,7 +31,7 @@ std::string exact(double v) {
 }  // namespace
 
 void writeHistoryCsv(const std::filesystem::path& file, const ResultLayout& layout, const std::vector<StepScalars>& steps) {
-  std::ofstream out(file, std::ios::trunc);
+  std::ostringstream out;
   out << "step,time" << (layout.inputName.empty() ? "" : "," + layout.inputName);
   for (const ArrayInfo& s : layout.scalars) out << ',' << s.name;
   out << '\n';
@@ -41,7 +41,7 @@ void writeHistoryCsv(const std::filesystem::path& file, const ResultLayout& layo
     for (double v : steps[k].scalars) out << ',' << exact(v);
     out << '\n';
   }
-  if (!out) throw RunError(file.string() + ": cannot write the history of the run");
+  writeFileAtomically(file, out.str());
 }
 
 std::vector<std::vector<std::size_t>> historyPanels(const ResultLayout& layout, const std::vector<StepScalars>& steps) {

@@ -1,11 +1,14 @@
 #include "sample_plan.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "host_errors.hpp"
 #include "result_layout.hpp"
 #include "sampling/monte_carlo.hpp"
+#include "sampling/nested_rules.hpp"
 #include "sampling/tensor_grid.hpp"
 #include "simulation.hpp"
 
@@ -77,7 +80,51 @@ sampling::SampleSet pointsOf(const SamplingOptions& options, const RandomSpace& 
   return {};
 }
 
+// How many samples the plan holds, counted before anything is built (a Smolyak grid of a high level in
+// many coordinates has more points than memory holds): tensor n^N; Monte Carlo the count asked for;
+// Smolyak the points of the combination technique's tensor grids before coincident ones merge, counted
+// up to level 200 (beyond it a grid in two or more coordinates has millions of points: the count at
+// level 200 is a lower bound that already refuses it).
+double plannedSamples(const SamplingOptions& options, const RandomSpace& space, std::uint64_t level) {
+  const std::size_t N = space.laws.size();
+  switch (options.rule) {
+    case SampleRule::Tensor: return std::pow(static_cast<double>(level), static_cast<double>(N));
+    case SampleRule::MonteCarlo: return static_cast<double>(level);
+    case SampleRule::Smolyak: break;
+  }
+  const auto points = [&](sampling::Law law, std::uint64_t l) {  // of the 1D rule at level l
+    if (!options.nested) return 2.0 * static_cast<double>(l) + 1;
+    if (l > static_cast<std::uint64_t>(sampling::nestedMaxLevel(law)))
+      throw std::invalid_argument("the nested rules have levels up to " + std::to_string(sampling::nestedMaxLevel(law)));
+    return static_cast<double>(sampling::sparseGridRule(law, static_cast<int>(l), sampling::Family::Nested).nodes.size());
+  };
+  if (N == 1) return points(space.laws[0], level);
+  const std::size_t L = static_cast<std::size_t>(std::min<std::uint64_t>(level, 200));
+  // count[s]: points of all tensor grids whose 1D levels sum to s, over the coordinates so far.
+  std::vector<double> count(L + 1, 0.0);
+  count[0] = 1;
+  for (sampling::Law law : space.laws) {
+    std::vector<double> next(L + 1, 0.0);
+    for (std::size_t s = 0; s <= L; ++s)
+      for (std::size_t l = 0; l <= s; ++l) next[s] += count[s - l] * points(law, l);
+    count = std::move(next);
+  }
+  double total = 0;  // the combination technique keeps the sums L - N + 1 .. L
+  for (std::size_t s = 0; s <= L; ++s)
+    if (s + N >= L + 1) total += count[s];
+  return total;
+}
+
 }  // namespace
+
+std::string ruleName(SampleRule rule) {
+  switch (rule) {
+    case SampleRule::Tensor: return "tensor";
+    case SampleRule::Smolyak: return "smolyak";
+    case SampleRule::MonteCarlo: return "mc";
+  }
+  return "?";
+}
 
 LevelPlan planLevel(const SamplingOptions& options, const RandomSpace& space, std::uint64_t level) {
   const bool random = !space.laws.empty();
@@ -86,6 +133,15 @@ LevelPlan planLevel(const SamplingOptions& options, const RandomSpace& space, st
                      "applies");
   LevelPlan plan;
   try {
+    if (const double planned = plannedSamples(options, space, level); planned > kMaxPlannedSamples) {
+      std::ostringstream why;
+      why.precision(3);
+      why << "--rule " << ruleName(options.rule) << " at level " << level << " in " << space.laws.size()
+          << " random coordinate(s) plans about " << planned << " samples, more than the " << kMaxPlannedSamples
+          << " a study may hold; choose a lower level"
+          << (options.rule == SampleRule::Smolyak ? " (level 1 has 2N + 1 points, level 2 about 2N^2)" : "");
+      throw InputError(why.str());
+    }
     plan.set = pointsOf(options, space, level);
     if (options.rule == SampleRule::Smolyak)
       plan.projection = sampling::sparsePseudoSpectral(

@@ -49,7 +49,14 @@ struct LevelPlan {
   std::optional<sampling::SparseProjection> projection;
 };
 
-// Throws InputError for a rule the space cannot take (tensor or Smolyak without random coordinates).
+// A study plans at most this many samples per level; a larger plan is refused before it is built.
+inline constexpr std::uint64_t kMaxPlannedSamples = 1'000'000;
+
+// The rule's name on the command line (tensor, smolyak, mc).
+std::string ruleName(SampleRule rule);
+
+// Throws InputError for a rule the space cannot take (tensor or Smolyak without random coordinates)
+// or a plan of more than kMaxPlannedSamples samples.
 LevelPlan planLevel(const SamplingOptions& options, const RandomSpace& space, std::uint64_t level);
 
 // The scene with this sample's xi (and seed); `definition` receives the text that identifies it.

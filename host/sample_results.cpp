@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 
+#include "atomic_file.hpp"
 #include "hdf5_support.hpp"
 #include "host_errors.hpp"
 #include "result_files.hpp"
@@ -119,7 +120,7 @@ void writeStudyHdf5(const std::filesystem::path& file, const StudyDescription& s
 
 void writeStudyCsv(const std::filesystem::path& file, const ResultLayout& layout, const std::vector<LevelResult>& levels) {
   const SampleRule rule = levels.empty() ? SampleRule::Tensor : levels.front().rule;
-  std::ofstream out(file);
+  std::ostringstream out;
   out << "level,samples,computed,errorMean,errorStd,diffMean,diffStd,seconds,failed";
   for (const ArrayInfo& s : layout.scalars) {
     out << ",mean_" << s.name << ",std_" << s.name;
@@ -146,7 +147,7 @@ void writeStudyCsv(const std::filesystem::path& file, const ResultLayout& layout
     }
     out << '\n';
   }
-  if (!out) throw RunError("cannot write " + file.string());
+  writeFileAtomically(file, out.str());
 }
 
 }  // namespace peristep::host

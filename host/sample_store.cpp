@@ -1,41 +1,55 @@
 #include "sample_store.hpp"
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <sstream>
+#include <string_view>
 
-#include <unistd.h>
-
+#include "atomic_file.hpp"
 #include "host_errors.hpp"
 
 namespace peristep::host {
 
 namespace {
 
-constexpr char kMagic[8] = {'P', 'S', 'S', 'A', 'M', 'P', 'L', '1'};
+// Format 2: the bytes after the magic end in the FNV-1a 64 of everything before them.
+constexpr char kMagic[8] = {'P', 'S', 'S', 'A', 'M', 'P', 'L', '2'};
 
 template <class T>
-void put(std::ofstream& out, const T& v) {
-  out.write(reinterpret_cast<const char*>(&v), sizeof v);
+void put(std::string& out, const T& v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof v);
 }
 
-void putVector(std::ofstream& out, const std::vector<double>& v) {
+void putVector(std::string& out, const std::vector<double>& v) {
   put(out, static_cast<std::uint64_t>(v.size()));
-  out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(double)));
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
 }
 
-template <class T>
-bool get(std::ifstream& in, T& v) {
-  return static_cast<bool>(in.read(reinterpret_cast<char*>(&v), sizeof v));
-}
-
-bool getVector(std::ifstream& in, std::vector<double>& v, std::uint64_t expected) {
-  std::uint64_t n = 0;
-  if (!get(in, n) || n != expected) return false;
-  v.resize(n);
-  return static_cast<bool>(in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(double))));
-}
+// Reads a record's payload front to back; every read fails once the bytes run out.
+struct Reader {
+  std::string_view bytes;
+  template <class T>
+  bool get(T& v) {
+    if (bytes.size() < sizeof v) return false;
+    std::memcpy(&v, bytes.data(), sizeof v);
+    bytes.remove_prefix(sizeof v);
+    return true;
+  }
+  bool getVector(std::vector<double>& v, std::uint64_t expected) {
+    std::uint64_t n = 0;
+    if (!get(n) || n != expected || bytes.size() / sizeof(double) < n) return false;
+    v.resize(n);
+    std::memcpy(v.data(), bytes.data(), n * sizeof(double));
+    bytes.remove_prefix(n * sizeof(double));
+    return true;
+  }
+};
 
 }  // namespace
 
@@ -43,6 +57,25 @@ SampleStore::SampleStore(std::filesystem::path directory) : dir_(std::move(direc
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) throw RunError("cannot create the sample directory " + dir_.string() + ": " + ec.message());
+  removeStaleTemporaries();
+}
+
+// A temporary is "<final>.<host>.<pid>.tmp": one of this host whose process has ended was left by a run
+// that died (or a full disk) and is removed; other hosts' and live processes' are theirs.
+void SampleStore::removeStaleTemporaries() const {
+  std::string prefix(1, '.');
+  prefix += hostName();
+  prefix += '.';
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir_, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".tmp") continue;
+    const std::size_t at = name.rfind(prefix);
+    if (at == std::string::npos) continue;
+    const std::string pid = name.substr(at + prefix.size(), name.size() - 4 - at - prefix.size());
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) std::filesystem::remove(entry.path(), ec);
+  }
 }
 
 std::uint64_t SampleStore::key(const std::string& definition) {
@@ -74,48 +107,41 @@ std::optional<SampleRecord> SampleStore::load(std::uint64_t key, std::size_t sca
                                               const std::vector<std::uint64_t>& fieldSizes) const {
   std::ifstream in(file(key), std::ios::binary);
   if (!in) return std::nullopt;
-  char magic[8];
-  if (!in.read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0) return std::nullopt;
-  SampleRecord r;
-  std::uint64_t nFields = 0;
-  if (!get(in, r.seconds) || !getVector(in, r.scalars, scalars) || !get(in, nFields) || nFields != fieldSizes.size())
+  std::ostringstream content;
+  content << in.rdbuf();
+  const std::string bytes = content.str();
+  std::uint64_t stored = 0;
+  if (bytes.size() < sizeof kMagic + sizeof stored || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+    return std::nullopt;  // another format: recomputed
+  const std::string_view payload(bytes.data(), bytes.size() - sizeof stored);
+  std::memcpy(&stored, bytes.data() + payload.size(), sizeof stored);
+  if (SampleStore::key(std::string(payload)) != stored) {
+    std::cerr << "peristep: warning: " << file(key).string()
+              << " is damaged (checksum mismatch); the sample is computed again\n";
     return std::nullopt;
-  r.fields.resize(nFields);
-  for (std::size_t i = 0; i < nFields; ++i)
-    if (!getVector(in, r.fields[i], fieldSizes[i])) return std::nullopt;
-  return r;
-}
-
-namespace {
-
-// Writes under a temporary name unique to the process, host and pid (two processes may finish the same
-// sample), and renames: a reader sees the old state or the whole file.
-template <class Write>
-void writeAtomically(const std::filesystem::path& final, Write write) {
-  char host[256] = "";
-  ::gethostname(host, sizeof host - 1);
-  const std::filesystem::path temporary = final.string() + "." + host + "." + std::to_string(::getpid()) + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    write(out);
-    out.flush();
-    if (!out) throw RunError("cannot write " + temporary.string());
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, final, ec);
-  if (ec) throw RunError("cannot rename " + temporary.string() + ": " + ec.message());
+  Reader r{payload.substr(sizeof kMagic)};
+  SampleRecord record;
+  std::uint64_t nFields = 0;
+  if (!r.get(record.seconds) || !r.getVector(record.scalars, scalars) || !r.get(nFields) ||
+      nFields != fieldSizes.size())
+    return std::nullopt;
+  record.fields.resize(nFields);
+  for (std::size_t i = 0; i < nFields; ++i)
+    if (!r.getVector(record.fields[i], fieldSizes[i])) return std::nullopt;
+  if (!r.bytes.empty()) return std::nullopt;
+  return record;
 }
 
-}  // namespace
 
 void SampleStore::save(std::uint64_t key, const SampleRecord& record) const {
-  writeAtomically(file(key), [&](std::ofstream& out) {
-    out.write(kMagic, sizeof kMagic);
-    put(out, record.seconds);
-    putVector(out, record.scalars);
-    put(out, static_cast<std::uint64_t>(record.fields.size()));
-    for (const auto& f : record.fields) putVector(out, f);
-  });
+  std::string bytes(kMagic, sizeof kMagic);
+  put(bytes, record.seconds);
+  putVector(bytes, record.scalars);
+  put(bytes, static_cast<std::uint64_t>(record.fields.size()));
+  for (const auto& f : record.fields) putVector(bytes, f);
+  put(bytes, SampleStore::key(bytes));
+  writeFileAtomically(file(key), bytes);
 }
 
 std::filesystem::path SampleStore::failureFile(std::uint64_t key) const {
@@ -131,7 +157,7 @@ std::optional<std::string> SampleStore::failure(std::uint64_t key) const {
 }
 
 void SampleStore::saveFailure(std::uint64_t key, const std::string& message) const {
-  writeAtomically(failureFile(key), [&](std::ofstream& out) { out << message; });
+  writeFileAtomically(failureFile(key), message);
 }
 
 }  // namespace peristep::host

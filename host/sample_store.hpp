@@ -3,9 +3,10 @@
 // hash of everything that defines the sample (the component binary, its instantiation token, parameters
 // with this sample's coordinates, loading).
 // A file is written under a temporary name and renamed, so an interrupted study leaves only whole
-// samples; restarting the same command finds them and recomputes nothing. Samples shared by two
-// rules or levels (nested rules, the centre node) are computed once. Processes that share the
-// directory (MPI ranks, batch-array shards) share the samples.
+// samples; restarting the same command finds them and recomputes nothing. A dead run's temporaries are
+// removed when the store is next opened; every file ends in a checksum, and a damaged one is recomputed
+// with a warning. Samples shared by two rules or levels (nested rules, the centre node) are computed
+// once. Processes that share the directory (MPI ranks, batch-array shards) share the samples.
 // A sample the component refused (fmi3Error) is kept as a text file with the message
 // (sample-<key>.failed): it is finished too, not retried on restart; delete the file to retry it.
 #include <cstdint>
@@ -43,6 +44,7 @@ class SampleStore {
  private:
   std::filesystem::path file(std::uint64_t key) const;
   std::filesystem::path failureFile(std::uint64_t key) const;  // sample-<key>.failed
+  void removeStaleTemporaries() const;
   std::filesystem::path dir_;
 };
 

@@ -357,11 +357,24 @@ Scene parseScene(std::string_view tomlText, const std::string& source, const Mod
 }
 
 Scene readScene(const std::filesystem::path& file, const ModelDescription& md) {
+  // Only a regular file of bounded size: a directory, a device (/dev/zero) or a pipe would otherwise be
+  // read as an empty scene or never end.
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (!std::filesystem::exists(status)) throw InputError(file.string() + ": cannot open the scene file");
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError(file.string() + ": not a regular file (a scene is a TOML file)");
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec || size > kMaxSceneFileBytes)
+    throw InputError(file.string() + ": " + (ec ? ec.message() : std::to_string(size) + " bytes, more than the " +
+                                                                     std::to_string(kMaxSceneFileBytes >> 20) +
+                                                                     " MiB a scene file may hold"));
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string() + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseScene(text.str(), file.string(), md);
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return parseScene(text, file.string(), md);
 }
 
 std::string describeValues(const Setting& s, const ModelDescription& md) {

@@ -47,6 +47,8 @@ struct Scene {
 };
 
 Scene parseScene(std::string_view toml, const std::string& source, const ModelDescription& md);
+// A scene file is a regular file of at most this size (material maps of a 2000 x 2000 grid fit).
+inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{256} << 20;
 Scene readScene(const std::filesystem::path& file, const ModelDescription& md);
 
 // Text of a value for messages and HDF5 attributes: enumeration items by name, arrays as [a, b].

@@ -1,10 +1,9 @@
 #include "xdmf_writer.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
-#include <system_error>
 
+#include "atomic_file.hpp"
 #include "host_errors.hpp"
 
 namespace peristep::host {
@@ -90,16 +89,7 @@ std::string xdmfDocument(const ResultLayout& layout, const std::string& hdf5File
 
 void writeXdmf(const std::filesystem::path& file, const ResultLayout& layout, const std::string& hdf5File,
                const std::vector<StepScalars>& steps) {
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << xdmfDocument(layout, hdf5File, steps);
-    if (!out) throw RunError(temporary.string() + ": cannot write the XDMF file");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) throw RunError(file.string() + ": cannot write the XDMF file: " + ec.message());
+  writeFileAtomically(file, xdmfDocument(layout, hdf5File, steps));
 }
 
 }  // namespace peristep::host

@@ -111,6 +111,32 @@ void writeEnumerations(std::ostream& out) {
   }
 }
 
+// How the load reaches a quasi-static scene in the common importers, and what to know about the dynamic
+// scenes' microsecond steps. input_loadFactor.csv ships beside this page.
+void writeImporters(std::ostream& out) {
+  out << "<h2 id=\"importers\">Loading a scene from fmusim or FMPy</h2>\n"
+         "<p>A quasi-static scene does nothing by itself: each <code>fmi3DoStep</code> solves at the value its "
+         "load input holds during the step (<code>loadFactor</code>, or <code>loadDisplacement</code> for "
+         "<code>glassCeramic</code>), and the start values are 0. Give the load as an input signal. "
+         "<code>input_loadFactor.csv</code> beside this page ramps <code>loadFactor</code> from 0 to 1 over "
+         "the default experiment; with the start values (Test 1 of 000 on 33 x 33 points):</p>\n"
+         "<pre>fmusim --input-file input_loadFactor.csv --output-interval 0.25 PeriStep.fmu</pre>\n"
+         "<p>In FMPy, pass the same signal as a structured array with fields <code>time</code> and "
+         "<code>loadFactor</code> to <code>simulate_fmu(..., input=signal, output_interval=0.25)</code>. "
+         "An importer applies the input at the start of each step, so step k solves at the load of time "
+         "t<sub>k</sub>. For <code>glassCeramic</code> set <code>scene</code>, <code>nx</code>, "
+         "<code>ny</code>, <code>Lx</code> and <code>Ly</code> as start values and ramp "
+         "<code>loadDisplacement</code> (0 to 3e-7 m reaches the crack's run on the coarse grids). FMPy "
+         "before 0.3.24 cannot read the <code>description</code> attribute of <code>&lt;EnumerationType&gt;</code>, "
+         "which FMI 3.0 allows; FMPy does not set structural parameters (<code>nx</code>, <code>ny</code>, "
+         "<code>nModes</code>, ...), so it runs the start values' grid.</p>\n"
+         "<p>The dynamic scenes step in microseconds (<code>learnedFracture</code> in 5e-14 s frames). fmusim "
+         "releases that compare communication times to a tolerance of about 1e-5 s end such a run early, "
+         "with status 0 and no message, after the first steps; run these scenes with the host "
+         "(<code>peristep run scenes/plexiglass_crack.toml</code>), with FMPy, or with an importer that steps "
+         "to the given stop time exactly, and check that the last output time is the stop time.</p>\n";
+}
+
 void writePage(const char* path) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(std::string("cannot open ") + path);
@@ -149,6 +175,7 @@ void writePage(const char* path) {
   for (const EnumerationItem& s : findEnumeration("PeriStep.Scene")->items)
     out << "<tr>" << cell(code(s.name)) << cell(std::to_string(s.value)) << cell(escaped(s.description)) << "</tr>\n";
   out << "</table>\n\n";
+  writeImporters(out);
   writeVariables(out);
   writeEnumerations(out);
   out << "<h2>Units</h2>\n<table>\n<tr><th>Unit</th><th>SI base units</th></tr>\n";

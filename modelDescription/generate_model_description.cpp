@@ -97,7 +97,15 @@ void writeModelDescription(const char* path) {
   w.attribute("instantiationToken", PERISTEP_INSTANTIATION_TOKEN);
   w.attribute("description", kModelSummary);
   w.attribute("version", PERISTEP_VERSION);
-  w.attribute("generationTool", "PeriStep generate_model_description");
+  w.attribute("author", "The PeriStep developers");
+  w.attribute("copyright", "Copyright (C) 2026 The PeriStep developers");
+  w.attribute("license",
+              "GPL-2.0-or-later; the FMU bundles SuiteSparse's UMFPACK and CHOLMOD (GPL-2+) and other libraries "
+              "whose licences are in documentation/licenses/");
+  w.attribute("generationTool", "PeriStep generate_model_description " PERISTEP_VERSION);
+  // A fixed date per version, not the build's clock: builds stay reproducible and the committed copy
+  // of this file identical to the generated one.
+  w.attribute("generationDateAndTime", PERISTEP_MODEL_DATE);
   w.attribute("variableNamingConvention", "flat");
 
   w.start("CoSimulation");

@@ -1,7 +1,18 @@
 #!/usr/bin/env bash
-# Installs PeriStep's Debian 12 packages (when missing) and builds it in ./build (Release).
+# Installs PeriStep's Debian 12 packages (when missing) and builds it in ./build (Release): the host
+# program and PeriStep.fmu, or with --tests everything (tests and benchmarks too).
+#
+#   bash scripts/setup.sh            # what `peristep run` needs
+#   bash scripts/setup.sh --tests    # and what `ctest --test-dir build` runs
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+targets=(--target peristep fmu)
+case "${1:-}" in
+  "") ;;
+  --tests) targets=() ;;
+  *) echo "usage: bash scripts/setup.sh [--tests]" >&2; exit 2 ;;
+esac
 
 packages=(cmake g++ make pkg-config patchelf libeigen3-dev libsundials-dev libhdf5-dev zlib1g-dev libxml2-dev catch2
           libopenblas-dev libsuitesparse-dev libmumps-seq-dev libmetis-dev libzip-dev libtomlplusplus-dev libcli11-dev libpng-dev
@@ -19,4 +30,4 @@ if ((${#missing[@]})); then
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)"
+cmake --build build -j"$(nproc)" "${targets[@]}"

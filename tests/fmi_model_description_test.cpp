@@ -54,6 +54,20 @@ TEST_CASE("the committed modelDescription.xml is the generated one", "[modelDesc
   CHECK(readFile(PERISTEP_COMMITTED_MODEL_DESCRIPTION) == readFile(PERISTEP_GENERATED_MODEL_DESCRIPTION));
 }
 
+TEST_CASE("modelDescription.xml names its author, copyright, licence, tool and date", "[modelDescription]") {
+  const XmlDocument doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
+  for (const char* name : {"author", "copyright", "license", "generationTool", "version"}) {
+    INFO(name);
+    CHECK(attribute(doc.root(), name).size() > 3);
+  }
+  // xs:dateTime as FMI 3.0 asks for it, in UTC.
+  const std::string date = attribute(doc.root(), "generationDateAndTime");
+  CHECK(date.size() == 20);
+  CHECK(date[4] == '-');
+  CHECK(date[10] == 'T');
+  CHECK(date.back() == 'Z');
+}
+
 TEST_CASE("modelDescription.xml validates against the FMI 3.0 schema", "[modelDescription]") {
   const char* schemaPath = PERISTEP_FMI3_SCHEMA;
   if (!std::filesystem::exists(schemaPath)) {

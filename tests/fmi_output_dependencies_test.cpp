@@ -83,8 +83,7 @@ void setInputs(Session& s, const double (&values)[2]) {
   REQUIRE(s.fmu.fmi3SetFloat64(s.instance, kInputs, 2, values, 2) == fmi3OK);
 }
 
-// The outputs after two steps, the first at the base inputs, the second at `second`. Fresh instances
-// rather than one restored FMU state: forceEvaluations counts work across fmi3SetFMUState.
+// The outputs after two steps, the first at the base inputs, the second at `second`, in a fresh instance.
 std::vector<std::vector<double>> run(const Scene& scene, const double (&second)[2], const std::vector<Output>& all) {
   Session s;
   setUpCoarseScene(s, scene.id);

@@ -53,7 +53,8 @@ TEST_CASE("PeriStep.fmu holds the model description, the binary, the documentati
       CHECK(content.substr(0, 4) == "\x7f" "ELF");
     } else if (!name.starts_with(licenses)) {
       CHECK((name == "modelDescription.xml" || name == "binaries/x86_64-linux/PeriStep.so" ||
-             name == "documentation/index.html" || name == "resources/md_fracture_samples.bin"));
+             name == "documentation/index.html" || name == "documentation/input_loadFactor.csv" ||
+             name == "resources/md_fracture_samples.bin"));
     }
   }
   REQUIRE(entries.count(licenses + "license.txt") == 1);
@@ -85,6 +86,19 @@ TEST_CASE("the FMU's documentation/index.html lists every variable of its model 
     ++listed;
   }
   CHECK(listed > 40);
+  // The importers' example input: a CSV whose columns are time and an input of the model description,
+  // spanning the default experiment; the page points at it.
+  REQUIRE(entries.count("documentation/input_loadFactor.csv") == 1);
+  const std::string& csv = entries.at("documentation/input_loadFactor.csv");
+  CHECK(csv.rfind("time,loadFactor\n0,0\n", 0) == 0);
+  xmlNodePtr experiment = firstChild(doc.root(), "DefaultExperiment");
+  REQUIRE(experiment != nullptr);
+  CHECK(csv.find("\n" + attribute(experiment, "stopTime") + ",") != std::string::npos);
+  bool loadIsInput = false;
+  for (xmlNodePtr v : children(firstChild(doc.root(), "ModelVariables")))
+    loadIsInput |= attribute(v, "name") == "loadFactor" && attribute(v, "causality") == "input";
+  CHECK(loadIsInput);
+  CHECK(html.find("fmusim --input-file input_loadFactor.csv") != std::string::npos);
   // The page names no file the archive lacks (the C header stays in the source tree).
   CHECK(html.find(".h<") == std::string::npos);
   CHECK(html.find("peristep.h") == std::string::npos);

@@ -12,7 +12,7 @@ namespace peristep::fmi {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x53505350;  // "PSPS"
-constexpr std::uint32_t kFormat = 3;  // 2: FNV-1a 64 checksum at the end; 3: the fracture state holds the last breaks
+constexpr std::uint32_t kFormat = 4;  // 4: the dynamic state holds its force-evaluation count
 
 // The token identifies the variable table the state was written against.
 constexpr std::string_view kToken = PERISTEP_INSTANTIATION_TOKEN;

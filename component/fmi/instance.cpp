@@ -133,7 +133,11 @@ void Instance::reset() {
 SceneModel& Instance::model() {
   if (!model_) {
     Stopwatch watch;
-    model_ = std::make_unique<SceneModel>(setUp(values_));
+    auto fresh = std::make_unique<SceneModel>(setUp(values_));
+    if (const std::string bad = firstNonFinite(values_, *fresh, Needs::Model); !bad.empty())
+      throw SolverFailure("the scene set-up is not finite (" + bad +
+                          "): a parameter too large or too small for double precision");
+    model_ = std::move(fresh);
     solutionValid_ = false;
     logger_.event("scene set up (geometry, quadrature, assembly, factorization) in " + number(watch.seconds()) +
                   " s");
@@ -154,8 +158,16 @@ SceneParameters Instance::setUp(const ParameterValues& values) const {
 void Instance::solve(double stepSize) {
   SceneModel& m = model();
   solutionValid_ = false;
-  m.advance(SceneInputs{values_.scalar<double>(PERISTEP_VR_LOAD_FACTOR),
-                        values_.scalar<double>(PERISTEP_VR_LOAD_DISPLACEMENT), time_, stepSize});
+  const double loadFactor = values_.scalar<double>(PERISTEP_VR_LOAD_FACTOR);
+  const double loadDisplacement = values_.scalar<double>(PERISTEP_VR_LOAD_DISPLACEMENT);
+  m.advance(SceneInputs{loadFactor, loadDisplacement, time_, stepSize});
+  // No output leaves with fmi3OK unless it is finite: a huge but finite load, velocity or restored state
+  // can overflow the dynamic models' energies without failing a solve.
+  if (const std::string bad = firstNonFinite(values_, m, Needs::Solution); !bad.empty())
+    throw SolverFailure("the solution is not finite (" + bad + " at loadFactor = " + number(loadFactor) +
+                        ", loadDisplacement = " + number(loadDisplacement) +
+                        "): a load, grip velocity, body force, material constant or restored state too large "
+                        "for double precision drives it out of range");
   solutionValid_ = true;
 }
 

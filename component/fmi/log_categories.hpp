@@ -22,7 +22,9 @@ inline constexpr std::array<LogCategoryInfo, 4> kLogCategories{{
     {LogCategory::StatusWarning, "logStatusWarning",
      "Messages of calls returning fmi3Warning (PeriStep returns none in normal operation)", true},
     {LogCategory::StatusError, "logStatusError",
-     "Why a call returned fmi3Error: illegal call sequence, bad argument, invalid value, solver failure", true},
+     "Why a call returned fmi3Error: illegal call sequence, bad argument, invalid value, solver failure "
+     "(always reported, whatever loggingOn and fmi3SetDebugLogging say)",
+     true},
     {LogCategory::Progress, "logProgress",
      "How far a long initialization or step has come, as 'progress: <phase> <done>/<total>' (phases setUp, "
      "pcaRealizations, internalSteps)",

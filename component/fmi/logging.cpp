@@ -16,7 +16,11 @@ void Logger::reset() {
   for (const auto& c : kLogCategories) enabled_[static_cast<std::size_t>(c.id)] = loggingOn_ && c.onWhenLoggingOn;
 }
 
-void Logger::error(std::string_view message) const noexcept { log(LogCategory::StatusError, fmi3Error, message); }
+// A refusal always reaches the importer: with loggingOn = false an importer would otherwise see only the
+// status code (the Reference FMUs report errors the same way).
+void Logger::error(std::string_view message) const noexcept {
+  log(LogCategory::StatusError, fmi3Error, message, true);
+}
 
 void Logger::event(std::string_view message) const noexcept { log(LogCategory::Events, fmi3OK, message); }
 
@@ -30,8 +34,8 @@ void Logger::progress(std::string_view phase, std::uint64_t done, std::uint64_t 
   }
 }
 
-void Logger::log(LogCategory c, fmi3Status status, std::string_view message) const noexcept {
-  if (!callback_ || !enabled(c)) return;
+void Logger::log(LogCategory c, fmi3Status status, std::string_view message, bool always) const noexcept {
+  if (!callback_ || !(always || enabled(c))) return;
   try {
     // The callback needs a NUL-terminated copy; it must copy it again if it keeps it.
     const std::string text(message);

@@ -1,6 +1,6 @@
 #pragma once
-// The importer's logMessage callback behind the log categories of modelDescription.xml. loggingOn
-// at instantiation enables the status categories; fmi3SetDebugLogging switches any of them.
+// The importer's logMessage callback behind the log categories of modelDescription.xml. Errors always
+// reach it; loggingOn at instantiation and fmi3SetDebugLogging switch the other categories.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -15,7 +15,7 @@ class Logger {
  public:
   Logger(fmi3LogMessageCallback callback, fmi3InstanceEnvironment environment, bool loggingOn);
 
-  // Category logStatusError, status fmi3Error. Never throws.
+  // Category logStatusError, status fmi3Error, whatever loggingOn says. Never throws.
   void error(std::string_view message) const noexcept;
   // Category logEvents, status fmi3OK.
   void event(std::string_view message) const noexcept;
@@ -32,7 +32,7 @@ class Logger {
 
  private:
   bool enabled(LogCategory c) const { return enabled_[static_cast<std::size_t>(c)]; }
-  void log(LogCategory c, fmi3Status status, std::string_view message) const noexcept;
+  void log(LogCategory c, fmi3Status status, std::string_view message, bool always = false) const noexcept;
 
   fmi3LogMessageCallback callback_;
   fmi3InstanceEnvironment environment_;

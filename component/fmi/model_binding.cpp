@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "core/errors.hpp"
 #include "core/memory.hpp"
+#include "core/number_text.hpp"
 #include "fmi/enumerations.hpp"
 #include "geometry/bar_grid.hpp"
 #include "peristep.h"
@@ -222,6 +224,21 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.limits.setUpSeconds = v.scalar<double>(PERISTEP_VR_SET_UP_TIME_LIMIT);
   p.limits.internalSteps = v.scalar<std::uint64_t>(PERISTEP_VR_MAX_INTERNAL_STEPS);
   return p;
+}
+
+std::string firstNonFinite(const ParameterValues& values, const SceneModel& model, Needs needs) {
+  std::vector<double> buffer;
+  for (const ComputedVariable& c : kComputed) {
+    if (c.needs != needs || !c.readFloat64) continue;
+    const Variable& v = *findVariable(c.vr);
+    buffer.resize(values.size(v));
+    c.readFloat64(values, &model, buffer);
+    for (std::size_t k = 0; k < buffer.size(); ++k)
+      if (!std::isfinite(buffer[k]))
+        return std::string(v.name) + (buffer.size() > 1 ? "[" + std::to_string(k) + "]" : "") + " = " +
+               numberText(buffer[k]);
+  }
+  return {};
 }
 
 const ComputedVariable* findComputed(fmi3ValueReference vr) {

@@ -4,6 +4,7 @@
 // output is read from.
 #include <cstdint>
 #include <span>
+#include <string>
 
 #include "fmi/parameter_values.hpp"
 #include "scenes/scene_model.hpp"
@@ -26,5 +27,9 @@ struct ComputedVariable {
 
 // nullptr for a variable that is not computed (parameters, inputs, the independent variable).
 const ComputedVariable* findComputed(fmi3ValueReference vr);
+
+// The first Float64 variable of `needs` (Model or Solution) whose value is not finite, as "name = inf" or
+// "name[k] = nan"; empty when all are finite.
+std::string firstNonFinite(const ParameterValues& values, const SceneModel& model, Needs needs);
 
 }  // namespace peristep::fmi

@@ -285,8 +285,8 @@ std::vector<Variable> makeTable() {
        .unit = "J/m", .dependencies = onLoadFactor()},
       {.name = "forceEvaluations", .vr = PERISTEP_VR_FORCE_EVALUATIONS, .type = T::Float64, .causality = C::Output,
        .variability = V::Continuous, .initial = I::Calculated,
-       .description = "Force evaluations (and Jacobian products) the time integrator of this instance has spent; "
-                      "not rewound by fmi3SetFMUState", .dependencies = onLoadFactor()},
+       .description = "Force evaluations (and Jacobian products) the time integrator has spent since the start of the "
+                      "run; an FMU state restores the count it was taken with", .dependencies = onLoadFactor()},
       {.name = "timeIntegrator", .vr = PERISTEP_VR_TIME_INTEGRATOR, .type = T::Enumeration,
        .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
        .description = "Dynamic scenes: time integrator; fmi3DoStep takes as many internal steps as it needs",

@@ -150,7 +150,10 @@ class DynamicRunner final : public Runner {
   double strainEnergy() const override { return record_.elastic; }
   double kineticEnergy() const override { return record_.kinetic; }
   double externalWork() const override { return record_.externalWork; }
-  double forceEvaluations() const override { return static_cast<double>(integrator_->stats().forceEquivalents()); }
+  // Counted over the run, so a restored state continues the count it was saved with.
+  double forceEvaluations() const override {
+    return evaluationsBefore_ + static_cast<double>(integrator_->stats().forceEquivalents());
+  }
 
   // Everything the future depends on: time, u, v, the work so far and the load path (the model keeps
   // no history: Z and the energies follow from u).
@@ -160,6 +163,7 @@ class DynamicRunner final : public Runner {
     ByteWriter w;
     w.put(integrator_->time());
     w.put(integrator_->externalWork());
+    w.put(forceEvaluations());
     w.putArray(std::span<const double>(integrator_->displacement(), n));
     w.putArray(std::span<const double>(integrator_->velocity(), n));
     w.put(path.scale);
@@ -171,7 +175,7 @@ class DynamicRunner final : public Runner {
   void restoreState(std::span<const std::uint8_t> bytes) override {
     const std::size_t n = scene_.problem->dofs();
     ByteReader r(bytes);
-    const double t = r.get<double>(), work = r.get<double>();
+    const double t = r.get<double>(), work = r.get<double>(), evaluations = r.get<double>();
     const std::vector<double> u = r.getArray<double>(n), v = r.getArray<double>(n);
     DynamicProblem::LoadPath path;
     path.scale = r.get<double>();
@@ -180,6 +184,7 @@ class DynamicRunner final : public Runner {
     r.expectEnd();
     scene_.problem->setLoadPath(path);
     integrator_->setState(t, u.data(), v.data(), work);
+    evaluationsBefore_ = evaluations - static_cast<double>(integrator_->stats().forceEquivalents());
     measure();
   }
 
@@ -194,6 +199,7 @@ class DynamicRunner final : public Runner {
   ProgressHook progress_;
   double timeStep_ = 0;
   std::unique_ptr<TimeIntegrator> integrator_;
+  double evaluationsBefore_ = 0;  // force evaluations of the run before the integrator's own count
   EnergyRecord record_;
   std::vector<std::array<double, 2>> reactions_;  // of the specimen's grips (scene_.grips)
 };

@@ -5,6 +5,7 @@
 
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
+#include "core/number_text.hpp"
 #include "models/lps_material.hpp"
 #include "scenes/bending_test.hpp"
 #include "scenes/exact_moments.hpp"
@@ -115,8 +116,10 @@ void validate(const SceneParameters& p) {
   if (usesKlField(p)) {
     require(std::isfinite(p.correlationLength) && p.correlationLength > 0,
             "correlationLength must be positive and finite (got " + std::to_string(p.correlationLength) + ")");
-    require(std::isfinite(p.fieldStd) && p.fieldStd > 0,
-            "fieldStd must be positive and finite (got " + std::to_string(p.fieldStd) + ")");
+    // The covariance holds fieldStd^2: below 1e-150 it underflows and the retained variance is 0/0.
+    require(std::isfinite(p.fieldStd) && p.fieldStd >= 1e-150 && p.fieldStd <= 1e150,
+            "fieldStd must lie in [1e-150, 1e150], where its square is a normal double (got " +
+                numberText(p.fieldStd) + ")");
   }
   if (usesGlassCeramic(p)) validate(phaseConstants(p));
   if (usesGlassCeramic(p) && p.pcaRealizations > 0)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/blocked_sum.hpp"
 #include "core/errors.hpp"
 #include "core/flush_denormals.hpp"
 #include "core/timer.hpp"
@@ -41,7 +42,7 @@ CentralDifference::CentralDifference(DynamicProblem& problem, const IntegratorOp
 }
 
 void CentralDifference::step(double dt) {
-  const auto n = static_cast<std::ptrdiff_t>(problem_.dofs());
+  const std::size_t n = problem_.dofs();
   const char* fixed = problem_.prescribed().data();
   const double tNew = t_ + dt;
   // External work by the trapezoid rule on each displacement increment, consistent with the scheme:
@@ -53,25 +54,24 @@ void CentralDifference::step(double dt) {
   double* v = v_.data();
   double* a = a_.data();
   const double* V = volume_.data();
-  double work = 0;
-#pragma omp parallel for schedule(static) reduction(+ : work) if (problem_.threaded())
-  for (std::ptrdiff_t d = 0; d < n; ++d)
-    if (!fixed[d]) {
-      v[d] += 0.5 * dt * a[d];
-      u[d] += dt * v[d];
-      if (profile) work += V[d] * bMid * profile[d] * dt * v[d];
-    }
+  // Fixed blocks, so the work is the same bits on any number of threads (core/blocked_sum.hpp).
+  double work = blockedSum(n, [&](std::size_t d) {
+    if (fixed[d]) return 0.0;
+    v[d] += 0.5 * dt * a[d];
+    u[d] += dt * v[d];
+    return profile ? V[d] * bMid * profile[d] * dt * v[d] : 0.0;
+  }, problem_.threaded());
   problem_.applyPrescribed(tNew, u, v);
   problem_.acceleration(tNew, u, fNext_.data(), a);
   const double* f0 = f_.data();
   const double* f1 = fNext_.data();
-#pragma omp parallel for schedule(static) reduction(+ : work) if (problem_.threaded())
-  for (std::ptrdiff_t d = 0; d < n; ++d) {
-    if (!fixed[d])
+  work -= blockedSum(n, [&](std::size_t d) {
+    if (!fixed[d]) {
       v[d] += 0.5 * dt * a[d];
-    else
-      work -= V[d] * 0.5 * (f0[d] + f1[d]) * v[d] * dt;  // v: the path's (scaled) velocity
-  }
+      return 0.0;
+    }
+    return V[d] * 0.5 * (f0[d] + f1[d]) * v[d] * dt;  // v: the path's (scaled) velocity
+  }, problem_.threaded());
   work_ += work;
   f_.swap(fNext_);
   t_ = tNew;

@@ -4,12 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/blocked_sum.hpp"
+
 namespace peristep {
 namespace {
-
-// Sums over rows go in fixed blocks, added in block order: the result does not depend on the number of threads,
-// so a run and its restored checkpoint agree bit for bit.
-constexpr std::size_t kRowBlock = 4096;
 
 double norm(std::span<const double> v) {
   double s = 0;
@@ -17,24 +15,10 @@ double norm(std::span<const double> v) {
   return std::sqrt(s);
 }
 
-// The sums over rows of addRow(i, partial) (width values each), taken in blocks of rows and added in block order.
-template <class F>
-std::vector<double> sumOverRows(std::size_t n, std::size_t width, F&& addRow) {
-  const std::size_t blocks = (n + kRowBlock - 1) / kRowBlock;
-  std::vector<double> partial(blocks * width, 0.0);
-#pragma omp parallel for schedule(static)
-  for (std::size_t blk = 0; blk < blocks; ++blk)
-    for (std::size_t i = blk * kRowBlock; i < std::min(n, (blk + 1) * kRowBlock); ++i) addRow(i, &partial[blk * width]);
-  std::vector<double> sum(width, 0.0);
-  for (std::size_t blk = 0; blk < blocks; ++blk)
-    for (std::size_t a = 0; a < width; ++a) sum[a] += partial[blk * width + a];
-  return sum;
-}
-
 // C(:, 0:k)^T w for row-major C (stride `stride`).
 std::vector<double> transposedProduct(const std::vector<double>& C, std::size_t stride, std::size_t k,
                                       std::span<const double> w) {
-  return sumOverRows(w.size(), k, [&](std::size_t i, double* p) {
+  return blockedSums(w.size(), k, [&](std::size_t i, double* p) {
     const double* row = &C[i * stride];
     for (std::size_t a = 0; a < k; ++a) p[a] += w[i] * row[a];
   });
@@ -105,7 +89,7 @@ void RecycledDirections::commit() {
   const std::size_t first = count_, end = count_ + pending_;
   pending_ = 0;
   if (end == first) return;
-  const std::vector<double> sums = sumOverRows(n_, end * (end - first), [&](std::size_t i, double* p) {
+  const std::vector<double> sums = blockedSums(n_, end * (end - first), [&](std::size_t i, double* p) {
     const double* row = &c_[i * capacity_];
     for (std::size_t k = first; k < end; ++k)
       for (std::size_t a = 0; a < end; ++a) p[(k - first) * end + a] += row[a] * row[k];

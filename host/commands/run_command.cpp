@@ -10,6 +10,7 @@
 #include "../fmu_loader.hpp"
 #include "../gnuplot.hpp"
 #include "../host_errors.hpp"
+#include "../output_lock.hpp"
 #include "../progress.hpp"
 #include "../result_files.hpp"
 #include "../run_history.hpp"
@@ -131,7 +132,9 @@ int runCommand(const RunOptions& options) {
     for (const auto& [name, value] : phases) note += " " + name + " " + value;
     liveBar->update(stepsDone, note);
   };
-  // Everything that can be refused (parameters, initialization) happens before a file is touched.
+  // One writer per output name, decided before the set-up; everything else that can be refused
+  // (parameters, initialization) happens before a result file is touched.
+  const OutputLock lock(out);
   Simulation simulation(library, fmu.md, scene, instanceOptions);
   const ResultLayout layout = simulation.layout();
 

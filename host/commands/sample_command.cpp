@@ -7,12 +7,14 @@
 // writes the results; --shard K/N runs a fixed part for batch arrays, --merge the statistics afterwards.
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <utility>
 
 #include "../fmu_loader.hpp"
 #include "../host_errors.hpp"
 #include "../mpi_session.hpp"
 #include "../mpi_work_queue.hpp"
+#include "../output_lock.hpp"
 #include "../progress.hpp"
 #include "../sample_plot.hpp"
 #include "../sample_results.hpp"
@@ -164,6 +166,10 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   if (out.empty())
     out = std::filesystem::path(options.scene).filename().replace_extension("").string() + "_" + options.rule + ".h5";
   const std::filesystem::path csv = std::filesystem::path(out).replace_extension(".csv");
+  // The process that writes the statistics holds the output's name for the whole study; shards and
+  // MPI ranks share the sample store, which takes whole files only.
+  std::optional<OutputLock> lock;
+  if (writes) lock.emplace(out);
   const SampleStore store(std::filesystem::path(out).replace_extension(".samples"));
 
   const std::filesystem::path binary = fmu.archive.binaryFile(fmu.md.coSimulationIdentifier);
