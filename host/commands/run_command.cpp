@@ -109,7 +109,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 int runCommand(const RunOptions& options) {
   const OpenedFmu fmu(options.fmu);
-  const Scene scene = loadScene(options.scene, fmu.md);
+  const Scene scene = loadScene(options.scene, fmu.md, options.set);
   const std::filesystem::path out = outputPath(options, scene);
 
   const FmuLibrary library(fmu.archive.binaryFile(fmu.md.coSimulationIdentifier));

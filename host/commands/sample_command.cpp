@@ -159,7 +159,7 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   const bool root = mpi.rank() == 0, writes = root && !sharded;
 
   const OpenedFmu fmu(options.fmu);
-  const Scene scene = loadScene(options.scene, fmu.md);
+  const Scene scene = loadScene(options.scene, fmu.md, options.set);
   std::filesystem::path out = options.out;
   if (out.empty())
     out = std::filesystem::path(options.scene).filename().replace_extension("").string() + "_" + options.rule + ".h5";
@@ -183,6 +183,11 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
                                {{"nested", std::vector<std::int64_t>{options.nested}},
                                 {"seed", std::vector<std::uint64_t>{options.seed}},
                                 {"sampleDirectory", store.directory().string()}}};
+  if (!options.set.empty()) {  // the study's parameters differ from the scene file's: say how
+    std::string set;
+    for (const std::string& s : options.set) set += (set.empty() ? "" : " ") + s;
+    description.attributes.push_back({"set", set});
+  }
   std::vector<LevelResult> levels;
   LevelWork shardWork;
   for (std::uint64_t level : rule.levels) {
