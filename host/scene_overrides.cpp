@@ -30,6 +30,10 @@ bool isInteger(VarType t) {
          t == VarType::Int32 || t == VarType::UInt32 || t == VarType::Int64 || t == VarType::UInt64;
 }
 
+bool isUnsigned(VarType t) {
+  return t == VarType::UInt8 || t == VarType::UInt16 || t == VarType::UInt32 || t == VarType::UInt64;
+}
+
 std::string itemList(const EnumerationType& e) {
   std::string list;
   for (const EnumerationItem& i : e.items) list += (list.empty() ? "" : ", ") + i.name;
@@ -55,6 +59,7 @@ Element element(const ParameterOverride& o, const Variable& var, const std::stri
     errno = 0;
     const long long v = std::strtoll(text.c_str(), &end, 10);
     if (text.empty() || *end != '\0' || errno == ERANGE) refuse(o, "expected an integer" + expected);
+    if (v < 0 && isUnsigned(var.type)) refuse(o, "expected a non-negative integer" + expected);
     return static_cast<std::int64_t>(v);
   }
   if (var.type == VarType::Boolean) {

@@ -16,7 +16,7 @@ namespace peristep::host {
 
 namespace {
 
-constexpr std::size_t kStartWidth = 16;  // start values wider than this are summarized
+constexpr std::size_t kStartWidth = 17;  // start values wider than this are summarized
 
 std::string shapeText(const Variable& v, const ModelDescription& md) {
   std::string out;
