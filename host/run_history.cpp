@@ -1,6 +1,7 @@
 #include "run_history.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -8,6 +9,8 @@
 
 #include "gnuplot.hpp"
 #include "host_errors.hpp"
+#include "load_quantity.hpp"
+#include "unit_scale.hpp"
 
 namespace peristep::host {
 
@@ -18,9 +21,6 @@ bool inputVaries(const std::vector<StepScalars>& steps) {
     if (s.input != steps.front().input) return true;
   return false;
 }
-
-// "name [unit]", or the name alone where the model declares no unit (dimensionless or not stated).
-std::string axisLabel(const std::string& name, const std::string& unit) { return unit.empty() ? name : name + " [" + unit + "]"; }
 
 std::string exact(double v) {
   char buffer[32];
@@ -73,26 +73,36 @@ std::string plotHistory(const std::filesystem::path& png, const ResultLayout& la
   const auto panels = historyPanels(layout, steps);
   if (panels.empty()) return "no output changes during the run";
   const bool againstInput = !layout.inputName.empty() && inputVaries(steps);
+  // The x axis: the quantity the input ramps (a grip displacement for the specimen's loadFactor), or time.
+  const LoadQuantity load = loadQuantity(layout, inputUnit);
+  double xLargest = 0;
+  for (const StepScalars& step : steps)
+    xLargest = std::max(xLargest, std::abs(againstInput ? load.perInput * step.input : step.time));
+  const ScaledUnit x = scaledUnit(againstInput ? load.unit : "s", xLargest);
   std::ostringstream s;
-  s << "set terminal pngcairo size " << kHistoryPlotWidth << ',' << historyPlotHeight(panels.size()) << " font ',10'\n"
+  s << "set encoding utf8\n"
+    << "set terminal pngcairo size " << kHistoryPlotWidth << ',' << historyPlotHeight(panels.size()) << " font ',10'\n"
     << "set output " << gnuplotQuoted(png.string()) << "\n"
     << "set grid\nset key top left noenhanced\nset format y '%.3g'\nset format x '%.3g'\n"
     << "$steps << EOD\n";
   for (const StepScalars& step : steps) {
-    s << exact(againstInput ? step.input : step.time);
+    s << exact((againstInput ? load.perInput * step.input : step.time) * x.factor);
     for (double v : step.scalars) s << ' ' << exact(v);
     s << '\n';
   }
   s << "EOD\n"
     << "set multiplot layout " << (panels.size() + 1) / 2 << ',' << std::min<std::size_t>(panels.size(), 2) << " title " << gnuplotQuoted(title) << " noenhanced\n"
-    << "set xlabel " << gnuplotQuoted(againstInput ? axisLabel(layout.inputName, inputUnit) : "time [s]")
-    << " noenhanced\n";
+    << "set xlabel " << gnuplotQuoted(axisLabel(againstInput ? load.name : "time", x.unit)) << " noenhanced\n";
   for (const auto& panel : panels) {
-    const std::string& unit = layout.scalars[panel.front()].unit;
-    s << "set ylabel " << gnuplotQuoted(panel.size() == 1 ? axisLabel(layout.scalars[panel.front()].name, unit) : "[" + unit + "]")
+    // One unit per panel, with the prefix that suits its largest value.
+    double largest = 0;
+    for (std::size_t i : panel)
+      for (const StepScalars& step : steps) largest = std::max(largest, std::abs(step.scalars[i]));
+    const ScaledUnit y = scaledUnit(layout.scalars[panel.front()].unit, largest);
+    s << "set ylabel " << gnuplotQuoted(panel.size() == 1 ? axisLabel(layout.scalars[panel.front()].name, y.unit) : "[" + y.unit + "]")
       << " noenhanced\nplot ";
     for (std::size_t c = 0; c < panel.size(); ++c)
-      s << (c ? ", " : "") << "$steps using 1:" << panel[c] + 2 << " with linespoints pt 7 ps 0.6 title "
+      s << (c ? ", " : "") << "$steps using 1:($" << panel[c] + 2 << "*" << exact(y.factor) << ") with linespoints pt 7 ps 0.6 title "
         << gnuplotQuoted(layout.scalars[panel[c]].name);
     s << '\n';
   }

@@ -12,7 +12,7 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-ProcessResult peristep(const TempDir& dir, std::vector<std::string> args) {
+ProcessResult cli(const TempDir& dir, std::vector<std::string> args) {
   args.insert(args.begin(), PERISTEP_HOST_BINARY);
   return runProcess(args, dir.path());
 }
@@ -61,7 +61,7 @@ const std::string kSmooth = PERISTEP_SOURCE_DIR "/scenes/smooth.toml";
 
 TEST_CASE("cli: peristep info fits 100 columns, one line per scene and variable", "[host][cli][info]") {
   TempDir dir;
-  const ProcessResult r = peristep(dir, {"info", "--fmu", PERISTEP_FMU});
+  const ProcessResult r = cli(dir, {"info", "--fmu", PERISTEP_FMU});
   INFO(r.err);
   REQUIRE(r.exitCode == 0);
   const std::vector<std::string> all = lines(r.out);
@@ -80,12 +80,12 @@ TEST_CASE("cli: peristep info fits 100 columns, one line per scene and variable"
   CHECK_THAT(lineOf("  poissonRatio "), Contains("Float64"));
   CHECK_THAT(lineOf("  glassCeramic "), Contains("glass-ceramic"));
   // The old form, the FMU as the argument, still works.
-  CHECK(peristep(dir, {"info", PERISTEP_FMU}).out == r.out);
+  CHECK(cli(dir, {"info", PERISTEP_FMU}).out == r.out);
 }
 
 TEST_CASE("cli: peristep info NAME shows one variable or scene in full", "[host][cli][info]") {
   TempDir dir;
-  const ProcessResult e = peristep(dir, {"info", "materialYoungsModulus"});
+  const ProcessResult e = cli(dir, {"info", "materialYoungsModulus"});
   INFO(e.err);
   REQUIRE(e.exitCode == 0);
   CHECK_THAT(e.out, Contains("materialYoungsModulus[ny][nx]"));
@@ -97,23 +97,23 @@ TEST_CASE("cli: peristep info NAME shows one variable or scene in full", "[host]
   CHECK(values == 1089);  // every start value, wrapped
   for (const std::string& line : lines(e.out)) CHECK(peristep::host::displayWidth(line) <= 100);
 
-  const ProcessResult s = peristep(dir, {"info", "scene"});
+  const ProcessResult s = cli(dir, {"info", "scene"});
   REQUIRE(s.exitCode == 0);
   CHECK_THAT(s.out, Contains("items of PeriStep.Scene:"));
   CHECK_THAT(s.out, Contains("glassCeramic = 4: Pre-cracked glass-ceramic plate"));
 
-  const ProcessResult g = peristep(dir, {"info", "glassCeramic"});
+  const ProcessResult g = cli(dir, {"info", "glassCeramic"});
   REQUIRE(g.exitCode == 0);
   CHECK_THAT(g.out, Contains("scene glassCeramic"));
 
-  const ProcessResult unknown = peristep(dir, {"info", "poisonRatio"});
+  const ProcessResult unknown = cli(dir, {"info", "poisonRatio"});
   CHECK(unknown.exitCode == 2);
   CHECK_THAT(unknown.err, Contains("did you mean poissonRatio?"));
 }
 
 TEST_CASE("cli: run --set overrides and adds [parameters] values, read as the variable's type", "[host][cli][run]") {
   TempDir dir;
-  const ProcessResult r = peristep(dir, {"run", kSmooth, "--set", "nx=9", "--set", "ny=9", "--set", "poissonRatio=0.27",
+  const ProcessResult r = cli(dir, {"run", kSmooth, "--set", "nx=9", "--set", "ny=9", "--set", "poissonRatio=0.27",
                                          "--set", "linearSolver=sparseLU", "--set", "xi=[0.5]", "--out", "s.h5"});
   INFO(r.out << r.err);
   REQUIRE(r.exitCode == 0);
@@ -127,7 +127,7 @@ TEST_CASE("cli: run --set overrides and adds [parameters] values, read as the va
   CHECK(readDataset(f, "/fields/ux").shape == std::vector<hsize_t>{4, 9, 9});
   H5Fclose(f);
   // The same run with xi = 0 (the file's start value): a different displacement, so xi was set.
-  REQUIRE(peristep(dir, {"run", kSmooth, "--set", "nx=9", "--set", "ny=9", "--set", "poissonRatio=0.27", "--out", "z.h5"})
+  REQUIRE(cli(dir, {"run", kSmooth, "--set", "nx=9", "--set", "ny=9", "--set", "poissonRatio=0.27", "--out", "z.h5"})
               .exitCode == 0);
   const hid_t a = openHdf5(dir / "s.h5"), b = openHdf5(dir / "z.h5");
   CHECK(readDataset(a, "/fields/ux").values != readDataset(b, "/fields/ux").values);
@@ -138,7 +138,7 @@ TEST_CASE("cli: run --set overrides and adds [parameters] values, read as the va
 TEST_CASE("cli: --set refuses unknown names, unsettable variables and values of the wrong type", "[host][cli]") {
   TempDir dir;
   const auto refused = [&](const std::string& set, const std::string& message) {
-    const ProcessResult r = peristep(dir, {"run", kSmooth, "--set", set, "--out", "x.h5"});
+    const ProcessResult r = cli(dir, {"run", kSmooth, "--set", set, "--out", "x.h5"});
     INFO(set << ": " << r.err);
     CHECK(r.exitCode == 2);
     CHECK_THAT(r.err, Contains(message));
@@ -153,7 +153,7 @@ TEST_CASE("cli: --set refuses unknown names, unsettable variables and values of 
   refused("scene=cracked", "unknown item \"cracked\" of PeriStep.Scene");
   refused("errorL2=0", "errorL2 is a continuous output and cannot be set");
   // Checked as a value in the file is: two values where the start value of nModes asks for one.
-  const ProcessResult shape = peristep(dir, {"run", kSmooth, "--set", "nModes=1", "--set", "xi=0.1, 0.2", "--out", "x.h5"});
+  const ProcessResult shape = cli(dir, {"run", kSmooth, "--set", "nModes=1", "--set", "xi=0.1, 0.2", "--out", "x.h5"});
   CHECK(shape.exitCode == 2);
   CHECK_THAT(shape.err, Contains("xi: has 2 values but its shape [nModes = 1] needs 1"));
 }
@@ -161,8 +161,8 @@ TEST_CASE("cli: --set refuses unknown names, unsettable variables and values of 
 TEST_CASE("cli: convergence --set changes every level; nx and ny belong to the levels", "[host][cli][convergence]") {
   TempDir dir;
   writeText(dir / "c.toml", "[parameters]\nscene = \"smooth\"\n[convergence]\nlevels = [4, 8]\n");
-  REQUIRE(peristep(dir, {"convergence", "c.toml", "--out", "a.csv"}).exitCode == 0);
-  const ProcessResult r = peristep(dir, {"convergence", "c.toml", "--set", "poissonRatio=0.45", "--out", "b.csv"});
+  REQUIRE(cli(dir, {"convergence", "c.toml", "--out", "a.csv"}).exitCode == 0);
+  const ProcessResult r = cli(dir, {"convergence", "c.toml", "--set", "poissonRatio=0.45", "--out", "b.csv"});
   INFO(r.out << r.err);
   REQUIRE(r.exitCode == 0);
   const std::vector<double> a = csvColumn(dir / "a.csv", "error_l2"), b = csvColumn(dir / "b.csv", "error_l2");
@@ -171,14 +171,14 @@ TEST_CASE("cli: convergence --set changes every level; nx and ny belong to the l
   CHECK(a[0] != b[0]);
   CHECK(a[1] != b[1]);
 
-  const ProcessResult nx = peristep(dir, {"convergence", "c.toml", "--set", "nx=9", "--out", "n.csv"});
+  const ProcessResult nx = cli(dir, {"convergence", "c.toml", "--set", "nx=9", "--out", "n.csv"});
   CHECK(nx.exitCode == 2);
   CHECK_THAT(nx.err, Contains("sets nx and ny from its [convergence] levels"));
 }
 
 TEST_CASE("cli: sample --set reaches every sample and is recorded in the study file", "[host][cli][sample]") {
   TempDir dir;
-  const ProcessResult r = peristep(dir, {"sample", PERISTEP_SOURCE_DIR "/scenes/smooth_sampling.toml", "--rule",
+  const ProcessResult r = cli(dir, {"sample", PERISTEP_SOURCE_DIR "/scenes/smooth_sampling.toml", "--rule",
                                          "tensor", "--level", "2", "--set", "nx=9", "--set", "ny=9", "--out", "t.h5"});
   INFO(r.out << r.err);
   REQUIRE(r.exitCode == 0);
@@ -199,12 +199,12 @@ TEST_CASE("cli: --threads takes a positive count, before or after the subcommand
     head.insert(head.end(), small.begin(), small.end());
     return head;
   };
-  CHECK(peristep(dir, args({"run", kSmooth, "--threads", "1", "--out", "one.h5"})).exitCode == 0);
+  CHECK(cli(dir, args({"run", kSmooth, "--threads", "1", "--out", "one.h5"})).exitCode == 0);
   CHECK(fs::exists(dir / "one.h5"));
-  CHECK(peristep(dir, args({"--threads", "2", "run", kSmooth, "--out", "two.h5"})).exitCode == 0);
+  CHECK(cli(dir, args({"--threads", "2", "run", kSmooth, "--out", "two.h5"})).exitCode == 0);
   CHECK(fs::exists(dir / "two.h5"));
   for (const char* bad : {"0", "-1", "two"}) {
-    const ProcessResult r = peristep(dir, args({"run", kSmooth, "--threads", bad, "--out", "bad.h5"}));
+    const ProcessResult r = cli(dir, args({"run", kSmooth, "--threads", bad, "--out", "bad.h5"}));
     INFO(bad << ": " << r.err);
     CHECK(r.exitCode == 2);
     CHECK_THAT(r.err, Contains("--threads"));
