@@ -28,7 +28,9 @@ double number(const ResultLayout& layout, const std::string& name) {
 }  // namespace
 
 LoadQuantity loadQuantity(const ResultLayout& layout, const std::string& inputUnit) {
-  LoadQuantity plain{layout.inputName, inputUnit, 1.0};
+  LoadQuantity plain{layout.inputName, inputUnit, 1.0, false};
+  if (layout.inputName == "loadFactor" && text(layout, "scene") == "gamutBar" && text(layout, "gamutProtocol") == "cyclic")
+    return {"step", "", 1.0, true};
   if (layout.inputName != "loadFactor" || text(layout, "scene") != "specimen") return plain;
   // The held grip that moves farthest at loadFactor 1 (grips moved in opposite directions, as the
   // glass-ceramic's bottom and top, are told by their names).
@@ -46,7 +48,7 @@ LoadQuantity loadQuantity(const ResultLayout& layout, const std::string& inputUn
       largest = std::abs(value);
       std::string lower = side;
       lower[0] = static_cast<char>(lower[0] - 'A' + 'a');
-      best = {lower + " grip " + (dynamic ? "velocity v" : "displacement u") + component, dynamic ? "m/s" : "m", value};
+      best = {lower + " grip " + (dynamic ? "velocity v" : "displacement u") + component, dynamic ? "m/s" : "m", value, false};
     }
   }
   return best;

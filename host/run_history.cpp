@@ -68,31 +68,44 @@ unsigned historyPlotHeight(std::size_t panels) {
   return kHistoryPanelHeight * static_cast<unsigned>((panels + 1) / 2) + 40;  // + the overall title
 }
 
+HistoryAxis historyXAxis(const ResultLayout& layout, const std::vector<StepScalars>& steps, const std::string& inputUnit) {
+  const LoadQuantity load = loadQuantity(layout, inputUnit);
+  const bool againstStep = !layout.inputName.empty() && load.unused;
+  const bool againstInput = !layout.inputName.empty() && !load.unused && inputVaries(steps);
+  HistoryAxis axis;
+  for (std::size_t k = 0; k < steps.size(); ++k)
+    axis.values.push_back(againstStep ? static_cast<double>(k + 1) : againstInput ? load.perInput * steps[k].input : steps[k].time);
+  if (againstStep) {
+    axis.label = "step";
+    return axis;
+  }
+  double largest = 0;
+  for (double v : axis.values) largest = std::max(largest, std::abs(v));
+  const ScaledUnit unit = scaledUnit(againstInput ? load.unit : "s", largest);
+  for (double& v : axis.values) v *= unit.factor;
+  axis.label = axisLabel(againstInput ? load.name : "time", unit.unit);
+  return axis;
+}
+
 std::string plotHistory(const std::filesystem::path& png, const ResultLayout& layout, const std::vector<StepScalars>& steps,
                         const std::string& title, const std::string& inputUnit) {
   const auto panels = historyPanels(layout, steps);
   if (panels.empty()) return "no output changes during the run";
-  const bool againstInput = !layout.inputName.empty() && inputVaries(steps);
-  // The x axis: the quantity the input ramps (a grip displacement for the specimen's loadFactor), or time.
-  const LoadQuantity load = loadQuantity(layout, inputUnit);
-  double xLargest = 0;
-  for (const StepScalars& step : steps)
-    xLargest = std::max(xLargest, std::abs(againstInput ? load.perInput * step.input : step.time));
-  const ScaledUnit x = scaledUnit(againstInput ? load.unit : "s", xLargest);
+  const HistoryAxis x = historyXAxis(layout, steps, inputUnit);
   std::ostringstream s;
   s << "set encoding utf8\n"
     << "set terminal pngcairo size " << kHistoryPlotWidth << ',' << historyPlotHeight(panels.size()) << " font ',10'\n"
     << "set output " << gnuplotQuoted(png.string()) << "\n"
-    << "set grid\nset key top left noenhanced\nset format y '%.3g'\nset format x '%.3g'\n"
+    << "set grid\nset key top left noenhanced\nset format y '%.4g'\nset format x '%.4g'\n"
     << "$steps << EOD\n";
-  for (const StepScalars& step : steps) {
-    s << exact((againstInput ? load.perInput * step.input : step.time) * x.factor);
-    for (double v : step.scalars) s << ' ' << exact(v);
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    s << exact(x.values[k]);
+    for (double v : steps[k].scalars) s << ' ' << exact(v);
     s << '\n';
   }
   s << "EOD\n"
     << "set multiplot layout " << (panels.size() + 1) / 2 << ',' << std::min<std::size_t>(panels.size(), 2) << " title " << gnuplotQuoted(title) << " noenhanced\n"
-    << "set xlabel " << gnuplotQuoted(axisLabel(againstInput ? load.name : "time", x.unit)) << " noenhanced\n";
+    << "set xlabel " << gnuplotQuoted(x.label) << " noenhanced\n";
   for (const auto& panel : panels) {
     // One unit per panel, with the prefix that suits its largest value.
     double largest = 0;
@@ -107,7 +120,7 @@ std::string plotHistory(const std::filesystem::path& png, const ResultLayout& la
     s << '\n';
   }
   s << "unset multiplot\n";
-  return runGnuplot(s.str());
+  return runGnuplot(s.str(), png);
 }
 
 }  // namespace peristep::host

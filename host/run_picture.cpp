@@ -79,8 +79,7 @@ std::string header(const std::filesystem::path& png, const ResultLayout& layout,
                    const PictureCaption& caption, const Frame& f) {
   const PictureSize size = runPictureSize(layout);
   std::string load;
-  if (!layout.inputName.empty()) {
-    const LoadQuantity q = loadQuantity(layout, caption.inputUnit);
+  if (const LoadQuantity q = loadQuantity(layout, caption.inputUnit); !layout.inputName.empty() && !q.unused) {
     const ScaledUnit unit = scaledUnit(q.unit, std::abs(q.perInput * step.input));
     load = ", " + q.name + " = " + shortNumber(q.perInput * step.input * unit.factor) + (unit.unit.empty() ? "" : " " + unit.unit);
   }
@@ -128,19 +127,7 @@ std::string damageScript(const ResultLayout& layout, bool cracked, const std::ve
   else  // without a layer on the palette there is no colour bar: one point outside the view keeps it
     s << ", \\\n  '-' using 1:2:3 with points lc palette notitle";
 
-  std::vector<std::pair<Rgb, std::string>> legend;
-  const bool glassCeramic =
-      textParameter(layout, "scene") == "glassCeramic" || textParameter(layout, "materialField") == "glassCeramic";
-  const PhaseModuli phases = modulus ? phaseModuli(*modulus) : PhaseModuli{};
-  if (phases.two) {
-    legend = {{kSoftPhase, (glassCeramic ? "glass, " : "") + modulusText(phases.softLo, phases.softHi)},
-              {kStiffPhase, (glassCeramic ? "crystal, " : "") + modulusText(phases.stiffLo, phases.stiffHi)}};
-  } else if (phases.points > 0) {
-    legend = {{kUniformPhase, "material, " + modulusText(phases.softLo, phases.softHi)}};
-  } else if (!modulus || modulus->empty()) {
-    legend = {{kUniformPhase, "material"}};
-  }
-  for (const auto& [colour, label] : legend)
+  for (const auto& [colour, label] : phaseLegend(layout, modulus ? *modulus : std::vector<double>{}))
     s << ", \\\n  keyentry with boxes fill solid 1.0 fc rgb '" << hex(colour) << "' title " << gnuplotQuoted(label);
   s << ", \\\n  keyentry with boxes fill solid 1.0 fc rgb '" << hex(kCrackFull) << "' title "
     << gnuplotQuoted("crack (damage ≥ " + shortNumber(kCrackDamage) + ")") << "\n";
@@ -195,6 +182,18 @@ std::string displacementScript(const ResultLayout& layout, const std::vector<dou
 
 }  // namespace
 
+std::vector<std::pair<Rgb, std::string>> phaseLegend(const ResultLayout& layout, const std::vector<double>& youngsModulus) {
+  const bool glassCeramic =
+      textParameter(layout, "scene") == "glassCeramic" || textParameter(layout, "materialField") == "glassCeramic";
+  const PhaseModuli phases = phaseModuli(youngsModulus);
+  if (phases.two)
+    return {{kSoftPhase, (glassCeramic ? "glass, " : "") + modulusText(phases.softLo, phases.softHi)},
+            {kStiffPhase, (glassCeramic ? "crystal, " : "") + modulusText(phases.stiffLo, phases.stiffHi)}};
+  if (phases.points > 0) return {{kUniformPhase, "material, " + modulusText(phases.softLo, phases.softHi)}};
+  if (youngsModulus.empty()) return {{kUniformPhase, "material"}};
+  return {};  // Void everywhere: nothing to name
+}
+
 PictureSize runPictureSize(const ResultLayout& layout) {
   constexpr double kPlotWidth = 700, kMargins = 190;  // left labels, colour bar; title, x label, legend
   const double aspect = layout.nx > 0 ? static_cast<double>(layout.ny) / static_cast<double>(layout.nx) : 1.0;
@@ -207,6 +206,7 @@ std::string writeRunPicture(const std::filesystem::path& png, const ResultLayout
   const std::vector<double>* y = gridValues(layout, step, "y");
   if (!x || !y) return "no point coordinates x, y on the grid";
   const Frame f = frame(layout, *x, *y);
+  if (!(f.dx > 0 && f.dy > 0)) return "the grid's points do not span an area";
   const std::string top = header(png, layout, step, caption, f);
 
   const std::vector<double>* damage = gridValues(layout, step, "damage");
@@ -219,7 +219,7 @@ std::string writeRunPicture(const std::filesystem::path& png, const ResultLayout
       if ((*damage)[i] >= kCrackDamage && image.pixels[i] != kVoid) cracks[i] = std::min((*damage)[i], 1.0), cracked = true;
     const GnuplotData rgb(image.pixels.data(), image.pixels.size() * sizeof(Rgb));
     const GnuplotData crackData(cracks.data(), cracks.size() * sizeof(double));
-    return runGnuplot(top + damageScript(layout, cracked, modulus, f, rgb, crackData));
+    return runGnuplot(top + damageScript(layout, cracked, modulus, f, rgb, crackData), png);
   }
   const std::vector<double>* ux = gridValues(layout, step, "ux");
   const std::vector<double>* uy = gridValues(layout, step, "uy");
@@ -231,7 +231,7 @@ std::string writeRunPicture(const std::filesystem::path& png, const ResultLayout
   const ScaledUnit scaled = scaledUnit(unit == "-" ? "" : unit, largest);  // the colour bar's numbers
   for (double& m : magnitude) m *= scaled.factor;
   const GnuplotData data(magnitude.data(), magnitude.size() * sizeof(double));
-  return runGnuplot(top + displacementScript(layout, *x, *y, *ux, *uy, f, scaled.unit.empty() ? ScaledUnit{1, "-"} : scaled, data));
+  return runGnuplot(top + displacementScript(layout, *x, *y, *ux, *uy, f, scaled.unit.empty() ? ScaledUnit{1, "-"} : scaled, data), png);
 }
 
 }  // namespace peristep::host

@@ -11,7 +11,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "png_writer.hpp"
 #include "result_layout.hpp"
 
 namespace peristep::host {
@@ -27,6 +30,10 @@ struct PictureSize {
 };
 // 1000 px wide, as tall as the domain's aspect ratio needs (between 400 and 1300 px).
 PictureSize runPictureSize(const ResultLayout& layout);
+
+// The legend of the material: one entry per phase (colour, "glass, E = 80 GPa"; a phase whose points
+// differ gives its range), none for Void; an empty modulus (the model has none) is "material".
+std::vector<std::pair<Rgb, std::string>> phaseLegend(const ResultLayout& layout, const std::vector<double>& youngsModulus);
 
 // Returns "" or why nothing was drawn (no coordinates or displacement on the grid, gnuplot failed).
 std::string writeRunPicture(const std::filesystem::path& png, const ResultLayout& layout, const StepValues& step,

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "gnuplot.hpp"
 #include "unit_scale.hpp"
@@ -33,7 +34,7 @@ struct ErrorCurve {
 };
 
 // The error columns of the study's CSV with something to draw: exact errors from one level on, the
-// distance to the last level from two (a single level has nothing to be compared with).
+// distance to the last level where it makes a curve (two levels or more besides the last).
 std::vector<ErrorCurve> errorCurves(const std::filesystem::path& csv, std::size_t& samplesColumn) {
   std::ifstream in(csv);
   std::string line;
@@ -53,8 +54,8 @@ std::vector<ErrorCurve> errorCurves(const std::filesystem::path& csv, std::size_
   std::vector<ErrorCurve> curves;
   for (const auto& [name, label, least] : {std::tuple<std::string, std::string, std::size_t>{"errorMean", "mean: error against the exact mean", 1},
                                            {"errorStd", "std: error against the exact std", 1},
-                                           {"diffMean", "mean: distance to the last level", 1},
-                                           {"diffStd", "std: distance to the last level", 1}})
+                                           {"diffMean", "mean: distance to the last level", 2},
+                                           {"diffStd", "std: distance to the last level", 2}})
     if (const std::size_t c = column(name, least)) curves.push_back({c, label});
   return samplesColumn ? curves : std::vector<ErrorCurve>{};
 }
@@ -86,21 +87,22 @@ void distributionPanel(std::ostream& s, const ResultDistribution& r, std::size_t
   s << block << " << EOD\n";
   for (std::size_t b = 0; b < bins; ++b) s << exact((*lo + (static_cast<double>(b) + 0.5) * width) * u.factor) << ' ' << count[b] << '\n';
   s << "EOD\n";
-  const double top = 1.25 * static_cast<double>(most);
+  const double top = 1.6 * static_cast<double>(most);  // room for the legend above the bars
   const auto vertical = [&](double x) { return "'+' using (" + exact(x * u.factor) + "):($0 * " + exact(top) + ") every ::0::1"; };
   s << "set xlabel " << gnuplotQuoted(axisLabel(r.name, u.unit)) << " noenhanced\n"
-    << "set ylabel 'samples'\nset yrange [0:" << exact(top) << "]\nset format x '%.3g'\nset format y '%g'\n"
-    << "set key top right noenhanced\nset boxwidth " << exact(width * u.factor) << "\nset style fill solid 0.5\n"
+    << "set ylabel 'samples'\nset yrange [0:" << exact(top) << "]\nset format x '%.4g'\nset format y '%g'\n"
+    << "set ytics " << std::max<std::size_t>(1, (most + 7) / 8) << "\n"  // whole samples
+    << "set key top right opaque noenhanced\nset boxwidth " << exact(width * u.factor) << "\nset style fill solid 0.8\n"
     << "set samples 2\n"
     << "plot " << block << " using 1:2 with boxes lc rgb '#3b528b' title "
-    << gnuplotQuoted(std::to_string(q) + " samples") << ", \\\n  " << vertical(r.mean)
+    << gnuplotQuoted(std::to_string(q) + " samples, std " + shortNumber(r.std * u.factor)) << ", \\\n  " << vertical(r.mean)
     << " with lines lw 2 lc rgb '#c00000' title "
     << gnuplotQuoted("mean " + shortNumber(r.mean * u.factor) + (u.unit.empty() ? "" : " " + u.unit));
   if (std::isfinite(r.low) && std::isfinite(r.high))
     s << ", \\\n  " << vertical(r.low) << " with lines lw 1.5 dt 2 lc rgb '#c00000' title "
       << gnuplotQuoted(r.interval + ": " + shortNumber(r.low * u.factor) + " to " + shortNumber(r.high * u.factor)) << ", \\\n  "
       << vertical(r.high) << " with lines lw 1.5 dt 2 lc rgb '#c00000' notitle";
-  s << "\nset autoscale y\nset samples 100\n";
+  s << "\nset autoscale y\nset ytics autofreq\nset samples 100\nset key noopaque\n";
 }
 
 }  // namespace
@@ -132,7 +134,7 @@ std::string plotSampleStudy(const std::filesystem::path& csv, const std::string&
   if (!curves.empty()) errorPanel(s, csv, samples, curves);
   for (std::size_t i = 0; i < drawn.size(); ++i) distributionPanel(s, *drawn[i], i);
   if (panels > 1) s << "unset multiplot\n";
-  const std::string problem = runGnuplot(s.str());
+  const std::string problem = runGnuplot(s.str(), png);
   return problem.empty() ? "wrote " + png.string() : "no plot: " + problem;
 }
 

@@ -1,5 +1,6 @@
-// `peristep run [SCENE] [--fmu PATH] [--out FILE]`: one loading scenario, results to HDF5 + XDMF, the
-// history of the scalar outputs to CSV, a picture of the last step and a plot of the history (gnuplot).
+// `peristep run [SCENE] [--fmu PATH] [--out FILE] [--set NAME=VALUE]...`: one loading scenario, results
+// to HDF5 + XDMF, the history of the scalar outputs to CSV, a picture of the last step (of a bar: its
+// stress-strain path) and a plot of the history (gnuplot).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include "../result_files.hpp"
 #include "../run_history.hpp"
 #include "../run_picture.hpp"
+#include "../stress_strain_picture.hpp"
 #include "../simulation.hpp"
 #include "commands.hpp"
 #include "opened_fmu.hpp"
@@ -92,7 +94,10 @@ std::vector<std::string> writeExtras(const std::filesystem::path& h5, const Resu
     else std::cerr << "peristep: no " << png.string() << ": " << problem << '\n';
   };
   const std::filesystem::path picture = std::filesystem::path(h5).replace_extension(".png");
-  draw(picture, writeRunPicture(picture, layout, recorded.back(), {scene, recorded.size(), recorded.size(), inputUnit}));
+  if (isBarRun(layout, history))  // nothing on the plate grid: the bar's stress-strain path instead
+    draw(picture, writeStressStrainPicture(picture, layout, history, md.modelName + ": " + scene));
+  else
+    draw(picture, writeRunPicture(picture, layout, recorded.back(), {scene, recorded.size(), recorded.size(), inputUnit}));
   std::filesystem::path plot = h5;
   plot.replace_filename(h5.stem().string() + "_history.png");
   draw(plot, plotHistory(plot, layout, history, md.modelName + ": " + scene, inputUnit));

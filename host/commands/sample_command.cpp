@@ -149,13 +149,14 @@ std::vector<ResultDistribution> resultDistributions(const Scene& scene, const Re
   for (const std::string& name : names)
     for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
       if (layout.scalars[i].name != name) continue;
-      ResultDistribution r{name, layout.scalars[i].unit, {}, NAN, NAN, NAN, ""};
+      ResultDistribution r{name, layout.scalars[i].unit, {}, NAN, NAN, NAN, NAN, ""};
       bool computed = !scene.results.empty();  // a named result is drawn even where it is zero
       for (const SampleRecord& s : last.records)
         if (std::isfinite(s.scalars[i])) r.values.push_back(s.scalars[i]), computed |= s.scalars[i] != 0;
       if (!computed || r.values.empty() || !last.momentsComputed) continue;
       const Moments& m = last.scalarMoments;
       r.mean = m.mean[i];
+      r.std = m.std[i];
       if (!m.seMean.empty() && std::isfinite(m.seMean[i])) {
         r.low = r.mean - interval95(m.seMean[i]), r.high = r.mean + interval95(m.seMean[i]);
         r.interval = "95% interval of the mean";
@@ -265,7 +266,8 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   writeStudyXdmfFile(xmf, out, study.layout(), levels);
   printLevels(levels, study.layout(), study.hasExactMoments(), rule.rule);
   const std::size_t failed = printFailures(levels, rule.rule);
-  std::cout << plotSampleStudy(csv, fmu.md.modelName + ": " + options.scene + ", rule " + options.rule,
+  const std::string sceneName = std::filesystem::path(options.scene).filename().string();
+  std::cout << plotSampleStudy(csv, fmu.md.modelName + ": " + sceneName + ", rule " + options.rule,
                                resultDistributions(scene, study.layout(), levels.back()))
             << '\n';
   std::cout << "wrote " << out.string() << ", " << xmf.string() << " and " << csv.string() << " (samples kept in "
