@@ -158,7 +158,7 @@ TEST_CASE("cli: --set refuses unknown names, unsettable variables and values of 
   CHECK_THAT(shape.err, Contains("xi: has 2 values but its shape [nModes = 1] needs 1"));
 }
 
-TEST_CASE("cli: convergence --set changes every level; nx and ny belong to the levels", "[host][cli][convergence]") {
+TEST_CASE("cli: convergence --set changes every level, and nx and ny belong to the levels", "[host][cli][convergence]") {
   TempDir dir;
   writeText(dir / "c.toml", "[parameters]\nscene = \"smooth\"\n[convergence]\nlevels = [4, 8]\n");
   REQUIRE(cli(dir, {"convergence", "c.toml", "--out", "a.csv"}).exitCode == 0);

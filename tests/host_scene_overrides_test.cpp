@@ -41,7 +41,7 @@ std::vector<T> valuesOf(const Scene& s, const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("--set: name=value split at the first '='", "[host][scene][set]") {
+TEST_CASE("scene overrides (--set): name=value split at the first '='", "[host][scene][set]") {
   CHECK(parseOverride("nx=9").name == "nx");
   CHECK(parseOverride(" nx = 9 ").value == "9");
   CHECK(parseOverride("a=b=c").value == "b=c");
@@ -49,7 +49,7 @@ TEST_CASE("--set: name=value split at the first '='", "[host][scene][set]") {
   CHECK_THROWS_WITH(parseOverride("=3"), Contains("the name is missing"));
 }
 
-TEST_CASE("--set: replaces a file's value or adds one, read as the variable's type", "[host][scene][set]") {
+TEST_CASE("scene overrides (--set): replaces a file's value or adds one, read as the variable's type", "[host][scene][set]") {
   const std::string file = "[parameters]\nnx = 5\nny = 5\nLx = 2.0\n";
   const Scene s = withSets(file, {"nx=9", "poissonRatio=0.25", "flag=true", "smallInt=-3", "scene=composite",
                                   "pair=[1.5, 2]", "Lx=3e-6"});
@@ -70,7 +70,7 @@ TEST_CASE("--set: replaces a file's value or adds one, read as the variable's ty
   CHECK(valuesOf<std::uint64_t>(withSets(file, {"nx=7", "nx=8"}), "nx") == std::vector<std::uint64_t>{8});
 }
 
-TEST_CASE("--set: unknown names, unsettable variables and malformed values are refused", "[host][scene][set]") {
+TEST_CASE("scene overrides (--set): unknown names, unsettable variables and malformed values are refused", "[host][scene][set]") {
   const std::string file = "[parameters]\nnx = 5\n";
   CHECK_THAT(errorOf(file, {"nxx=9"}), Contains("--set nxx=9: unknown variable"));
   CHECK_THAT(errorOf(file, {"nxx=9"}), Contains("did you mean nx?"));

@@ -147,7 +147,9 @@ int runCommand(const RunOptions& options) {
     liveBar = &bar.emplace("run", simulation.schedule().size());
     for (const Increment& inc : simulation.schedule()) {
       if (!simulation.mayContinue()) {
-        std::cerr << "peristep: the component asked to stop after step " << recorded.size() << '\n';
+        // Not an error: a fracture scene ends its test this way once the crack has crossed the specimen.
+        std::cerr << "peristep: the component ended the run after step " << recorded.size() << " of "
+                  << simulation.schedule().size() << " (terminateSimulation: the scene's test is over)\n";
         break;
       }
       StepValues step = simulation.step(inc);
