@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   const std::string fmuHelp = "FMU archive (.fmu) or unpacked FMU directory";
 
   unsigned threads = 0;
-  app.add_option("--threads", threads, "threads of the component (OpenMP and OpenBLAS); default: all cores")
+  app.add_option("--threads", threads, "threads of the component (OpenMP and OpenBLAS); default: OMP_NUM_THREADS, else all cores")
       ->check(CLI::Range(1u, 4096u));
   app.fallthrough();  // --threads after the subcommand too
 
@@ -67,6 +67,9 @@ int main(int argc, char** argv) {
   sampleCmd->add_flag("--merge", sample.merge,
                       "run no sample: statistics and result files from the stored samples (after --shard runs)")
       ->excludes("--shard");
+
+  for (CLI::App* command : {runCmd, convCmd, sampleCmd})
+    command->footer("--threads N (here or before the subcommand): threads of the component");
 
   try {
     app.parse(argc, argv);

@@ -96,7 +96,7 @@ std::string plotHistory(const std::filesystem::path& png, const ResultLayout& la
   s << "set encoding utf8\n"
     << "set terminal pngcairo size " << kHistoryPlotWidth << ',' << historyPlotHeight(panels.size()) << " font ',10'\n"
     << "set output " << gnuplotQuoted(png.string()) << "\n"
-    << "set grid\nset key top left noenhanced\nset format y '%.4g'\nset format x '%.4g'\n"
+    << "set grid\nset format y '%.4g'\nset format x '%.4g'\n"
     << "$steps << EOD\n";
   for (std::size_t k = 0; k < steps.size(); ++k) {
     s << exact(x.values[k]);
@@ -113,7 +113,9 @@ std::string plotHistory(const std::filesystem::path& png, const ResultLayout& la
       for (const StepScalars& step : steps) largest = std::max(largest, std::abs(step.scalars[i]));
     const ScaledUnit y = scaledUnit(layout.scalars[panel.front()].unit, largest);
     s << "set ylabel " << gnuplotQuoted(panel.size() == 1 ? axisLabel(layout.scalars[panel.front()].name, y.unit) : "[" + y.unit + "]")
-      << " noenhanced\nplot ";
+      << " noenhanced\n"
+      // A lone curve is named by its axis; several get a key beside the plot, where it hides no data.
+      << (panel.size() == 1 ? "unset key\n" : "set key outside right top vertical noenhanced\n") << "plot ";
     for (std::size_t c = 0; c < panel.size(); ++c)
       s << (c ? ", " : "") << "$steps using 1:($" << panel[c] + 2 << "*" << exact(y.factor) << ") with linespoints pt 7 ps 0.6 title "
         << gnuplotQuoted(layout.scalars[panel[c]].name);
