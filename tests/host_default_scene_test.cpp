@@ -14,18 +14,18 @@ TEST_CASE("default scene: the compiled-in text is scenes/default.toml", "[host][
   CHECK(std::string(defaultSceneText()) == file);
 }
 
-TEST_CASE("default scene: the glass-ceramic plate at h = 10 um, opened to 0.32 um in 40 increments", "[host][scene]") {
+TEST_CASE("default scene: the glass-ceramic plate at h = 8.9 um, opened to 0.32 um in 40 increments", "[host][scene]") {
   const ModelDescription md = readModelDescription(PERISTEP_SOURCE_DIR "/modelDescription/modelDescription.xml");
   const Scene s = parseScene(defaultSceneText(), "default", md);
   REQUIRE(s.setting("scene") != nullptr);
   CHECK(describeValues(*s.setting("scene"), md) == "glassCeramic");
-  CHECK(std::get<std::vector<std::uint64_t>>(s.setting("nx")->values) == std::vector<std::uint64_t>{81});
-  CHECK(std::get<std::vector<std::uint64_t>>(s.setting("ny")->values) == std::vector<std::uint64_t>{41});
-  // The same spacing in x and y: Lx / (nx - 1) = Ly / (ny - 1) = 10 um.
+  CHECK(std::get<std::vector<std::uint64_t>>(s.setting("nx")->values) == std::vector<std::uint64_t>{91});
+  CHECK(std::get<std::vector<std::uint64_t>>(s.setting("ny")->values) == std::vector<std::uint64_t>{46});
+  // The same spacing in x and y: Lx / (nx - 1) = Ly / (ny - 1) = 8.9 um.
   const double lx = std::get<std::vector<double>>(s.setting("Lx")->values).front();
   const double ly = std::get<std::vector<double>>(s.setting("Ly")->values).front();
-  CHECK(lx / 80 == Approx(10e-6));
-  CHECK(ly / 40 == Approx(10e-6));
+  CHECK(lx / 90 == Approx(ly / 45));
+  CHECK(lx / 90 == Approx(8.889e-6).epsilon(1e-3));
   REQUIRE(s.loading.input.has_value());
   CHECK(s.loading.input->name == "loadDisplacement");
   CHECK(s.loading.from == 0.0);
