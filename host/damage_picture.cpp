@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "host_errors.hpp"
@@ -17,12 +18,37 @@ Rgb blend(const Rgb& a, const Rgb& b, double t) {
   return {mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)};
 }
 
+bool isVoid(double youngsModulus) { return !(youngsModulus > 0); }
+
 }  // namespace
 
-bool hasTwoPhases(const std::vector<double>& youngsModulus) {
-  if (youngsModulus.empty()) return false;
-  const auto [lo, hi] = std::minmax_element(youngsModulus.begin(), youngsModulus.end());
-  return *hi - *lo > 1e-9 * std::max(std::abs(*hi), std::abs(*lo));
+PhaseModuli phaseModuli(const std::vector<double>& youngsModulus) {
+  PhaseModuli p;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (double e : youngsModulus) {
+    if (isVoid(e)) {
+      ++p.voidPoints;
+      continue;
+    }
+    ++p.points;
+    lo = std::min(lo, e), hi = std::max(hi, e);
+  }
+  if (p.points == 0) return p;
+  p.softLo = p.softHi = lo;
+  p.two = hi - lo > 1e-9 * hi;
+  if (!p.two) {
+    p.softHi = hi;
+    return p;
+  }
+  p.mid = 0.5 * (lo + hi);
+  p.stiffLo = hi;
+  p.stiffHi = hi;
+  for (double e : youngsModulus) {
+    if (isVoid(e)) continue;
+    if (e > p.mid) p.stiffLo = std::min(p.stiffLo, e);
+    else p.softHi = std::max(p.softHi, e);
+  }
+  return p;
 }
 
 RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<double>& damage,
@@ -32,13 +58,13 @@ RgbImage damagePicture(std::uint64_t ny, std::uint64_t nx, const std::vector<dou
     throw RunError("damage picture: the fields do not have " + std::to_string(ny) + " x " + std::to_string(nx) + " values");
   RgbImage image{ny, nx, std::vector<Rgb>(n, kUniformPhase)};
 
-  if (hasTwoPhases(youngsModulus)) {
-    const auto [lo, hi] = std::minmax_element(youngsModulus.begin(), youngsModulus.end());
-    const double mid = 0.5 * (*lo + *hi);
-    for (std::size_t i = 0; i < n; ++i) image.pixels[i] = youngsModulus[i] > mid ? kStiffPhase : kSoftPhase;
+  const PhaseModuli phases = phaseModuli(youngsModulus);
+  for (std::size_t i = 0; i < youngsModulus.size(); ++i) {
+    if (isVoid(youngsModulus[i])) image.pixels[i] = kVoid;
+    else if (phases.two) image.pixels[i] = youngsModulus[i] > phases.mid ? kStiffPhase : kSoftPhase;
   }
   for (std::size_t i = 0; i < n; ++i) {
-    if (!(damage[i] >= kCrackDamage)) continue;
+    if (!(damage[i] >= kCrackDamage) || image.pixels[i] == kVoid) continue;  // a hole is not a crack
     const double t = (std::min(damage[i], 1.0) - kCrackDamage) / (1.0 - kCrackDamage);
     image.pixels[i] = blend(kCrackOnset, kCrackFull, t);
   }

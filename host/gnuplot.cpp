@@ -34,6 +34,15 @@ std::string runGnuplot(const std::string& script) {
   return "";
 }
 
+std::string runGnuplot(const std::string& script, const std::filesystem::path& picture) {
+  std::string problem = runGnuplot(script);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(picture, ec);
+  if (problem.empty() && (ec || size == 0)) problem = "gnuplot wrote no picture";
+  if (!problem.empty()) std::filesystem::remove(picture, ec);
+  return problem;
+}
+
 GnuplotData::GnuplotData(const void* bytes, std::size_t size) {
   std::string name = (std::filesystem::temp_directory_path() / "peristep_plot_XXXXXX").string();
   const int fd = mkstemp(name.data());

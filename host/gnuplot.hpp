@@ -16,6 +16,9 @@ std::string gnuplotQuoted(const std::string& s);
 
 // Runs `script` through `gnuplot` (its messages go to our stderr); returns its complaint or "".
 std::string runGnuplot(const std::string& script);
+// The same for a script that writes `picture`: a failed or empty picture is removed (gnuplot creates
+// the file before it draws), so a picture on disk is one that was drawn.
+std::string runGnuplot(const std::string& script, const std::filesystem::path& picture);
 
 // A temporary file of raw bytes that a script reads (`binary array=...`), removed with the object.
 class GnuplotData {

@@ -47,7 +47,7 @@ std::string plotConvergence(const std::vector<LevelResult>& rows, const std::fil
          << "set key top right\n"  // the error falls with cost: the upper right corner is free
          << "plot $levels using 3:2 with linespoints pt 7 title 'errorL2'" << fitLine(rows, true, "t") << "\n"
          << "unset multiplot\n";
-  return runGnuplot(script.str());
+  return runGnuplot(script.str(), png);
 }
 
 }  // namespace peristep::host

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <utility>
 
 #include "commands/commands.hpp"
 #include "host_errors.hpp"
@@ -15,26 +16,35 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", PERISTEP_VERSION);
   app.require_subcommand(1);
 
-  InfoOptions info{PERISTEP_DEFAULT_FMU};
-  RunOptions run{{}, PERISTEP_DEFAULT_FMU, {}, false};
-  ConvergenceOptions convergence{{}, PERISTEP_DEFAULT_FMU, {}, false};
+  InfoOptions info;
+  RunOptions run;
+  ConvergenceOptions convergence;
   SampleOptions sample;
-  sample.fmu = PERISTEP_DEFAULT_FMU;
+  info.fmu = run.fmu = convergence.fmu = sample.fmu = PERISTEP_DEFAULT_FMU;
   const std::string fmuHelp = "FMU archive (.fmu) or unpacked FMU directory";
 
-  CLI::App* infoCmd = app.add_subcommand("info", "list the variables a scene file can name");
-  infoCmd->add_option("fmu", info.fmu, fmuHelp)->capture_default_str();
+  unsigned threads = 0;
+  app.add_option("--threads", threads, "threads of the component (OpenMP and OpenBLAS); default: OMP_NUM_THREADS, else all cores")
+      ->check(CLI::Range(1u, 4096u));
+  app.fallthrough();  // --threads after the subcommand too
+
+  CLI::App* infoCmd = app.add_subcommand("info", "the scenes and variables a scene file can name, one line each");
+  infoCmd->add_option("name", info.name, "a variable or scene to show in full");
+  infoCmd->add_option("--fmu", info.fmu, fmuHelp)->capture_default_str();
+  const std::string setHelp = "set a [parameters] value of the scene (repeatable), e.g. --set nx=101";
 
   CLI::App* runCmd = app.add_subcommand("run", "run a loading scenario; results to HDF5 with an XDMF sidecar");
   runCmd->add_option("scene", run.scene, "scene file (TOML); without one, the built-in default scene");
   runCmd->add_option("--fmu", run.fmu, fmuHelp)->capture_default_str();
   runCmd->add_option("--out", run.out, "HDF5 result file (default: the scene's [output] file)");
+  runCmd->add_option("--set", run.set, setHelp)->allow_extra_args(false);
   runCmd->add_flag("-v,--verbose", run.verbose, "echo every message the component logs");
 
   CLI::App* convCmd = app.add_subcommand("convergence", "refinement study over the scene's [convergence] levels");
   convCmd->add_option("scene", convergence.scene, "scene file (TOML) with [convergence] levels")->required();
   convCmd->add_option("--fmu", convergence.fmu, fmuHelp)->capture_default_str();
   convCmd->add_option("--out", convergence.out, "CSV table (default: the scene's [output] csv); plot beside it");
+  convCmd->add_option("--set", convergence.set, setHelp)->allow_extra_args(false);
   convCmd->add_flag("-v,--verbose", convergence.verbose, "echo every message the component logs");
 
   CLI::App* sampleCmd =
@@ -49,6 +59,7 @@ int main(int argc, char** argv) {
   sampleCmd->add_option("--seed", sample.seed, "mc: seed (or the first seed of a scene without random coordinates: microstructure, bar realization)")->capture_default_str();
   sampleCmd->add_option("--fmu", sample.fmu, fmuHelp)->capture_default_str();
   sampleCmd->add_option("--out", sample.out, "HDF5 study file (default: <scene>_<rule>.h5); CSV beside it");
+  sampleCmd->add_option("--set", sample.set, setHelp)->allow_extra_args(false);
   sampleCmd->add_flag("-v,--verbose", sample.verbose, "echo every message the component logs");
   sampleCmd->add_option("--shard", sample.shard,
                         "K/N: run only samples K, K+N, K+2N, ... (1 <= K <= N) of every level and store them; "
@@ -57,6 +68,9 @@ int main(int argc, char** argv) {
                       "run no sample: statistics and result files from the stored samples (after --shard runs)")
       ->excludes("--shard");
 
+  for (CLI::App* command : {runCmd, convCmd, sampleCmd})
+    command->footer("--threads N (here or before the subcommand): threads of the component");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -64,6 +78,11 @@ int main(int argc, char** argv) {
     std::cerr << "peristep: " << e.what() << " (see peristep --help)\n";
     return kExitInputError;
   }
+
+  // Before the FMU, and with it libgomp and OpenBLAS, is loaded: both read the count when loaded.
+  if (threads > 0) peristep::setThreadCount(threads);
+  // `peristep info FMU`, as before --fmu existed: a name that is an FMU path is the FMU.
+  if (info.name.size() > 4 && info.name.ends_with(".fmu")) info.fmu = std::exchange(info.name, "");
 
   try {
     if (infoCmd->parsed()) return infoCommand(info);

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <string>
 #include <utility>
 
 namespace peristep {
@@ -43,6 +44,15 @@ inline bool preferProcessSettings() {
       set = true;
     }
   return set;
+}
+
+// The component's thread count (OpenMP loops, OpenBLAS): both read it from the environment when the FMU
+// loads them, so this must come before the FMU is loaded. Overrides the user's environment: it is the
+// user's explicit choice on the command line.
+inline void setThreadCount(unsigned threads) {
+  const std::string n = std::to_string(threads);
+  setenv("OMP_NUM_THREADS", n.c_str(), 1);
+  setenv("OPENBLAS_NUM_THREADS", n.c_str(), 1);
 }
 
 // At the top of main, before anything reads them: the settings above, then the program afresh with them

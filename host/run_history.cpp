@@ -1,6 +1,7 @@
 #include "run_history.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -8,6 +9,8 @@
 #include "atomic_file.hpp"
 #include "gnuplot.hpp"
 #include "host_errors.hpp"
+#include "load_quantity.hpp"
+#include "unit_scale.hpp"
 
 namespace peristep::host {
 
@@ -18,9 +21,6 @@ bool inputVaries(const std::vector<StepScalars>& steps) {
     if (s.input != steps.front().input) return true;
   return false;
 }
-
-// "name [unit]", or the name alone where the model declares no unit (dimensionless or not stated).
-std::string axisLabel(const std::string& name, const std::string& unit) { return unit.empty() ? name : name + " [" + unit + "]"; }
 
 std::string exact(double v) {
   char buffer[32];
@@ -68,36 +68,61 @@ unsigned historyPlotHeight(std::size_t panels) {
   return kHistoryPanelHeight * static_cast<unsigned>((panels + 1) / 2) + 40;  // + the overall title
 }
 
+HistoryAxis historyXAxis(const ResultLayout& layout, const std::vector<StepScalars>& steps, const std::string& inputUnit) {
+  const LoadQuantity load = loadQuantity(layout, inputUnit);
+  const bool againstStep = !layout.inputName.empty() && load.unused;
+  const bool againstInput = !layout.inputName.empty() && !load.unused && inputVaries(steps);
+  HistoryAxis axis;
+  for (std::size_t k = 0; k < steps.size(); ++k)
+    axis.values.push_back(againstStep ? static_cast<double>(k + 1) : againstInput ? load.perInput * steps[k].input : steps[k].time);
+  if (againstStep) {
+    axis.label = "step";
+    return axis;
+  }
+  double largest = 0;
+  for (double v : axis.values) largest = std::max(largest, std::abs(v));
+  const ScaledUnit unit = scaledUnit(againstInput ? load.unit : "s", largest);
+  for (double& v : axis.values) v *= unit.factor;
+  axis.label = axisLabel(againstInput ? load.name : "time", unit.unit);
+  return axis;
+}
+
 std::string plotHistory(const std::filesystem::path& png, const ResultLayout& layout, const std::vector<StepScalars>& steps,
                         const std::string& title, const std::string& inputUnit) {
   const auto panels = historyPanels(layout, steps);
   if (panels.empty()) return "no output changes during the run";
-  const bool againstInput = !layout.inputName.empty() && inputVaries(steps);
+  const HistoryAxis x = historyXAxis(layout, steps, inputUnit);
   std::ostringstream s;
-  s << "set terminal pngcairo size " << kHistoryPlotWidth << ',' << historyPlotHeight(panels.size()) << " font ',10'\n"
+  s << "set encoding utf8\n"
+    << "set terminal pngcairo size " << kHistoryPlotWidth << ',' << historyPlotHeight(panels.size()) << " font ',10'\n"
     << "set output " << gnuplotQuoted(png.string()) << "\n"
-    << "set grid\nset key top left noenhanced\nset format y '%.3g'\nset format x '%.3g'\n"
+    << "set grid\nset format y '%.4g'\nset format x '%.4g'\n"
     << "$steps << EOD\n";
-  for (const StepScalars& step : steps) {
-    s << exact(againstInput ? step.input : step.time);
-    for (double v : step.scalars) s << ' ' << exact(v);
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    s << exact(x.values[k]);
+    for (double v : steps[k].scalars) s << ' ' << exact(v);
     s << '\n';
   }
   s << "EOD\n"
     << "set multiplot layout " << (panels.size() + 1) / 2 << ',' << std::min<std::size_t>(panels.size(), 2) << " title " << gnuplotQuoted(title) << " noenhanced\n"
-    << "set xlabel " << gnuplotQuoted(againstInput ? axisLabel(layout.inputName, inputUnit) : "time [s]")
-    << " noenhanced\n";
+    << "set xlabel " << gnuplotQuoted(x.label) << " noenhanced\n";
   for (const auto& panel : panels) {
-    const std::string& unit = layout.scalars[panel.front()].unit;
-    s << "set ylabel " << gnuplotQuoted(panel.size() == 1 ? axisLabel(layout.scalars[panel.front()].name, unit) : "[" + unit + "]")
-      << " noenhanced\nplot ";
+    // One unit per panel, with the prefix that suits its largest value.
+    double largest = 0;
+    for (std::size_t i : panel)
+      for (const StepScalars& step : steps) largest = std::max(largest, std::abs(step.scalars[i]));
+    const ScaledUnit y = scaledUnit(layout.scalars[panel.front()].unit, largest);
+    s << "set ylabel " << gnuplotQuoted(panel.size() == 1 ? axisLabel(layout.scalars[panel.front()].name, y.unit) : "[" + y.unit + "]")
+      << " noenhanced\n"
+      // A lone curve is named by its axis; several get a key beside the plot, where it hides no data.
+      << (panel.size() == 1 ? "unset key\n" : "set key outside right top vertical noenhanced\n") << "plot ";
     for (std::size_t c = 0; c < panel.size(); ++c)
-      s << (c ? ", " : "") << "$steps using 1:" << panel[c] + 2 << " with linespoints pt 7 ps 0.6 title "
+      s << (c ? ", " : "") << "$steps using 1:($" << panel[c] + 2 << "*" << exact(y.factor) << ") with linespoints pt 7 ps 0.6 title "
         << gnuplotQuoted(layout.scalars[panel[c]].name);
     s << '\n';
   }
   s << "unset multiplot\n";
-  return runGnuplot(s.str());
+  return runGnuplot(s.str(), png);
 }
 
 }  // namespace peristep::host

@@ -9,16 +9,12 @@
 
 #include "damage_picture.hpp"
 #include "gnuplot.hpp"
+#include "load_quantity.hpp"
+#include "unit_scale.hpp"
 
 namespace peristep::host {
 
 namespace {
-
-std::string g4(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g", v);
-  return buffer;
-}
 
 std::string hex(const Rgb& c) {
   char buffer[16];
@@ -49,8 +45,8 @@ std::string textParameter(const ResultLayout& layout, const std::string& name) {
 }
 
 // The grid as gnuplot's `binary array` sees it: the lattice of the first row and column (points may
-// be jittered by a fraction of h; the picture puts them on the lattice), in a length unit that
-// gives numbers between 0.5 and 1000 across the domain.
+// be jittered by a fraction of h; the picture puts them on the lattice), in the length unit
+// unit_scale picks for the coordinates of the domain's edges.
 struct Frame {
   double x0 = 0, y0 = 0, dx = 1, dy = 1, scale = 1;
   std::string unit;
@@ -71,10 +67,11 @@ Frame frame(const ResultLayout& layout, const std::vector<double>& x, const std:
   f.dx = nx > 1 ? (x[nx - 1] - x[0]) / static_cast<double>(nx - 1) : 1.0;
   f.dy = ny > 1 ? (y[(ny - 1) * nx] - y[0]) / static_cast<double>(ny - 1) : f.dx;
   if (nx == 1) f.dx = f.dy;
-  const double extent = std::max(f.dx * static_cast<double>(nx), f.dy * static_cast<double>(ny));
-  if (extent >= 0.5) f.scale = 1, f.unit = "m";
-  else if (extent >= 5e-4) f.scale = 1e3, f.unit = "mm";
-  else f.scale = 1e6, f.unit = "µm";
+  const double farthest = std::max({std::abs(f.x0 - 0.5 * f.dx), std::abs(f.x0 + (static_cast<double>(nx) - 0.5) * f.dx),
+                                    std::abs(f.y0 - 0.5 * f.dy), std::abs(f.y0 + (static_cast<double>(ny) - 0.5) * f.dy)});
+  const ScaledUnit length = scaledUnit("m", farthest);
+  f.scale = length.factor;
+  f.unit = length.unit;
   return f;
 }
 
@@ -82,8 +79,11 @@ std::string header(const std::filesystem::path& png, const ResultLayout& layout,
                    const PictureCaption& caption, const Frame& f) {
   const PictureSize size = runPictureSize(layout);
   std::string load;
-  if (!layout.inputName.empty())
-    load = ", " + layout.inputName + " = " + g4(step.input) + (caption.inputUnit.empty() ? "" : " " + caption.inputUnit);
+  if (const LoadQuantity q = loadQuantity(layout, caption.inputUnit); !layout.inputName.empty() && !q.unused) {
+    const ScaledUnit unit = scaledUnit(q.unit, std::abs(q.perInput * step.input));
+    load = ", " + q.name + " = " + shortNumber(q.perInput * step.input * unit.factor) + (unit.unit.empty() ? "" : " " + unit.unit);
+  }
+  const ScaledUnit time = scaledUnit("s", std::abs(step.time));
   const double half = 0.5;
   std::ostringstream s;
   s.precision(17);
@@ -92,7 +92,7 @@ std::string header(const std::filesystem::path& png, const ResultLayout& layout,
     << "set output " << gnuplotQuoted(png.string()) << "\n"
     << "set title " << gnuplotQuoted(caption.scene) << ".\"\\n\"." // a quoted string cannot hold a line break
     << gnuplotQuoted("step " + std::to_string(caption.step) + " of " + std::to_string(caption.steps) + ", t = " +
-                     g4(step.time) + " s" + load)
+                     shortNumber(step.time * time.factor) + " " + time.unit + load)
     << " noenhanced\n"
     << "set xlabel 'x [" << f.unit << "]'\nset ylabel 'y [" << f.unit << "]'\n"
     << "set size ratio -1\n"
@@ -103,41 +103,34 @@ std::string header(const std::filesystem::path& png, const ResultLayout& layout,
   return s.str();
 }
 
-// Phases and cracks: damage_picture's colours as an RGB layer, the cracks again as a damage layer on
-// the colour bar (same colours), legend entries for the phases.
-std::string damageScript(const ResultLayout& layout, const std::vector<double>& damage, const std::vector<double>* modulus,
-                         const Frame& f, const GnuplotData& rgb, const GnuplotData& cracks) {
+// "E = 80 GPa", or the range of a phase whose points differ (a random field): "E = 61.2-98.7 GPa".
+std::string modulusText(double lo, double hi) {
+  const ScaledUnit pa = scaledUnit("Pa", hi);
+  const std::string a = shortNumber(lo * pa.factor), b = shortNumber(hi * pa.factor);
+  return "E = " + (a == b ? a : a + "–" + b) + " " + pa.unit;
+}
+
+// Phases and cracks: damage_picture's colours as an RGB layer (Void white, as the background: no
+// legend entry), the cracks again as a damage layer on the colour bar (same colours), legend entries
+// for the phases with their moduli.
+std::string damageScript(const ResultLayout& layout, bool cracked, const std::vector<double>* modulus, const Frame& f,
+                         const GnuplotData& rgb, const GnuplotData& cracks) {
   std::ostringstream s;
   s << "set cbrange [" << kCrackDamage << ":1]\n"
     << "set palette defined (0 '" << hex(kCrackOnset) << "', 1 '" << hex(kCrackFull) << "')\n"
     << "set cblabel 'damage (broken fraction of bonds) [" << unitOf(layout, "damage") << "]'\n"
     << "plot " << gnuplotQuoted(rgb.path().string()) << ' ' << f.binary(layout.nx, layout.ny, "%uchar%uchar%uchar")
     << " with rgbimage notitle";
-  const bool cracked = std::any_of(damage.begin(), damage.end(), [](double d) { return d >= kCrackDamage; });
   if (cracked)
     s << ", \\\n  " << gnuplotQuoted(cracks.path().string()) << ' ' << f.binary(layout.nx, layout.ny, "%float64")
       << " with image notitle";
   else  // without a layer on the palette there is no colour bar: one point outside the view keeps it
     s << ", \\\n  '-' using 1:2:3 with points lc palette notitle";
 
-  std::vector<std::pair<Rgb, std::string>> legend;
-  const bool glassCeramic = textParameter(layout, "scene") == "glassCeramic";
-  if (modulus && !modulus->empty()) {
-    const auto [lo, hi] = std::minmax_element(modulus->begin(), modulus->end());
-    const auto named = [&](const char* phase, double e) {
-      return (glassCeramic ? std::string(phase) + ", " : std::string()) + "E = " + g4(e / 1e9) + " GPa";
-    };
-    if (hasTwoPhases(*modulus))
-      legend = {{kSoftPhase, named("glass", *lo)}, {kStiffPhase, named("crystal", *hi)}};
-    else
-      legend = {{kUniformPhase, "material, E = " + g4(*lo / 1e9) + " GPa"}};
-  } else {
-    legend = {{kUniformPhase, "material"}};
-  }
-  for (const auto& [colour, label] : legend)
+  for (const auto& [colour, label] : phaseLegend(layout, modulus ? *modulus : std::vector<double>{}))
     s << ", \\\n  keyentry with boxes fill solid 1.0 fc rgb '" << hex(colour) << "' title " << gnuplotQuoted(label);
   s << ", \\\n  keyentry with boxes fill solid 1.0 fc rgb '" << hex(kCrackFull) << "' title "
-    << gnuplotQuoted("crack (damage ≥ " + g4(kCrackDamage) + ")") << "\n";
+    << gnuplotQuoted("crack (damage ≥ " + shortNumber(kCrackDamage) + ")") << "\n";
   if (!cracked) s << "1e30 1e30 1\ne\n";
   return s.str();
 }
@@ -153,7 +146,7 @@ double roundDown125(double v) {
 // |u| as an image and the grid deformed by u (every k-th line, magnified).
 std::string displacementScript(const ResultLayout& layout, const std::vector<double>& x, const std::vector<double>& y,
                                const std::vector<double>& ux, const std::vector<double>& uy, const Frame& f,
-                               const GnuplotData& magnitude) {
+                               const ScaledUnit& unit, const GnuplotData& magnitude) {
   const std::size_t nx = layout.nx, ny = layout.ny;
   double largest = 0;
   for (std::size_t i = 0; i < ux.size(); ++i) largest = std::max(largest, std::hypot(ux[i], uy[i]));
@@ -178,16 +171,28 @@ std::string displacementScript(const ResultLayout& layout, const std::vector<dou
   }
   s << "EOD\n"
     << "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n"
-    << "set cbrange [0:" << (largest > 0 ? largest : 1.0) << "]\n"
-    << "set format cb '%.2g'\n"
-    << "set cblabel 'displacement magnitude |u| [" << unitOf(layout, "ux") << "]'\n"
+    << "set cbrange [0:" << (largest > 0 ? largest * unit.factor : 1.0) << "]\n"
+    << "set format cb '%.3g'\n"
+    << "set cblabel " << gnuplotQuoted("displacement magnitude |u| [" + unit.unit + "]") << "\n"
     << "plot " << gnuplotQuoted(magnitude.path().string()) << ' ' << f.binary(nx, ny, "%float64")
     << " with image notitle, \\\n  $grid with lines lc rgb 'white' lw 0.8 title "
-    << gnuplotQuoted(largest > 0 ? "grid deformed by u × " + g4(magnify) : "grid (no displacement)") << "\n";
+    << gnuplotQuoted(largest > 0 ? "grid deformed by u × " + shortNumber(magnify) : "grid (no displacement)") << "\n";
   return s.str();
 }
 
 }  // namespace
+
+std::vector<std::pair<Rgb, std::string>> phaseLegend(const ResultLayout& layout, const std::vector<double>& youngsModulus) {
+  const bool glassCeramic =
+      textParameter(layout, "scene") == "glassCeramic" || textParameter(layout, "materialField") == "glassCeramic";
+  const PhaseModuli phases = phaseModuli(youngsModulus);
+  if (phases.two)
+    return {{kSoftPhase, (glassCeramic ? "glass, " : "") + modulusText(phases.softLo, phases.softHi)},
+            {kStiffPhase, (glassCeramic ? "crystal, " : "") + modulusText(phases.stiffLo, phases.stiffHi)}};
+  if (phases.points > 0) return {{kUniformPhase, "material, " + modulusText(phases.softLo, phases.softHi)}};
+  if (youngsModulus.empty()) return {{kUniformPhase, "material"}};
+  return {};  // Void everywhere: nothing to name
+}
 
 PictureSize runPictureSize(const ResultLayout& layout) {
   constexpr double kPlotWidth = 700, kMargins = 190;  // left labels, colour bar; title, x label, legend
@@ -201,26 +206,32 @@ std::string writeRunPicture(const std::filesystem::path& png, const ResultLayout
   const std::vector<double>* y = gridValues(layout, step, "y");
   if (!x || !y) return "no point coordinates x, y on the grid";
   const Frame f = frame(layout, *x, *y);
+  if (!(f.dx > 0 && f.dy > 0)) return "the grid's points do not span an area";
   const std::string top = header(png, layout, step, caption, f);
 
   const std::vector<double>* damage = gridValues(layout, step, "damage");
   if (damage && std::any_of(damage->begin(), damage->end(), [](double d) { return d > 0; })) {
     const std::vector<double>* modulus = gridValues(layout, step, "youngsModulus");
     const RgbImage image = damagePicture(layout.ny, layout.nx, *damage, modulus ? *modulus : std::vector<double>{});
-    std::vector<double> cracks(damage->size());
+    std::vector<double> cracks(damage->size(), std::numeric_limits<double>::quiet_NaN());
+    bool cracked = false;
     for (std::size_t i = 0; i < cracks.size(); ++i)
-      cracks[i] = (*damage)[i] >= kCrackDamage ? std::min((*damage)[i], 1.0) : std::numeric_limits<double>::quiet_NaN();
+      if ((*damage)[i] >= kCrackDamage && image.pixels[i] != kVoid) cracks[i] = std::min((*damage)[i], 1.0), cracked = true;
     const GnuplotData rgb(image.pixels.data(), image.pixels.size() * sizeof(Rgb));
     const GnuplotData crackData(cracks.data(), cracks.size() * sizeof(double));
-    return runGnuplot(top + damageScript(layout, *damage, modulus, f, rgb, crackData));
+    return runGnuplot(top + damageScript(layout, cracked, modulus, f, rgb, crackData), png);
   }
   const std::vector<double>* ux = gridValues(layout, step, "ux");
   const std::vector<double>* uy = gridValues(layout, step, "uy");
   if (!ux || !uy) return "no displacement ux, uy on the grid";
   std::vector<double> magnitude(ux->size());
-  for (std::size_t i = 0; i < magnitude.size(); ++i) magnitude[i] = std::hypot((*ux)[i], (*uy)[i]);
+  double largest = 0;
+  for (std::size_t i = 0; i < magnitude.size(); ++i) largest = std::max(largest, magnitude[i] = std::hypot((*ux)[i], (*uy)[i]));
+  const std::string unit = unitOf(layout, "ux");
+  const ScaledUnit scaled = scaledUnit(unit == "-" ? "" : unit, largest);  // the colour bar's numbers
+  for (double& m : magnitude) m *= scaled.factor;
   const GnuplotData data(magnitude.data(), magnitude.size() * sizeof(double));
-  return runGnuplot(top + displacementScript(layout, *x, *y, *ux, *uy, f, data));
+  return runGnuplot(top + displacementScript(layout, *x, *y, *ux, *uy, f, scaled.unit.empty() ? ScaledUnit{1, "-"} : scaled, data), png);
 }
 
 }  // namespace peristep::host

@@ -8,6 +8,7 @@
 #include "hdf5_support.hpp"
 #include "host_errors.hpp"
 #include "result_files.hpp"
+#include "xdmf_writer.hpp"
 
 namespace peristep::host {
 
@@ -96,6 +97,23 @@ void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const
   }
 }
 
+// The points as the study's XDMF file reads them: x and y interleaved, [ny][nx][2] (ParaView's XDMF 3
+// reader takes no separate X_Y geometry).
+void writeXdmfGeometry(hid_t file, const ResultLayout& layout) {
+  const std::vector<double>* x = nullptr;
+  const std::vector<double>* y = nullptr;
+  for (std::size_t i = 0; i < layout.constantArrays.size(); ++i)
+    if (layout.onGrid(layout.constantArrays[i])) {
+      if (layout.constantArrays[i].name == "x") x = &layout.constantValues[i];
+      if (layout.constantArrays[i].name == "y") y = &layout.constantValues[i];
+    }
+  if (!x || !y) return;
+  std::vector<double> xy(2 * x->size());
+  for (std::size_t k = 0; k < x->size(); ++k) xy[2 * k] = (*x)[k], xy[2 * k + 1] = (*y)[k];
+  Handle group(createGroup(file, "xdmf"), H5Gclose, "create xdmf");
+  writeDataset(group, "xy", {layout.ny, layout.nx, 2}, xy.data());
+}
+
 }  // namespace
 
 void writeStudyHdf5(const std::filesystem::path& file, const StudyDescription& study, const ResultLayout& layout,
@@ -111,6 +129,7 @@ void writeStudyHdf5(const std::filesystem::path& file, const StudyDescription& s
     Handle grid(createGroup(f, "grid"), H5Gclose, "create grid");
     for (std::size_t i = 0; i < layout.constantArrays.size(); ++i)
       writeDataset(grid, layout.constantArrays[i].name, layout.constantArrays[i].shape, layout.constantValues[i].data());
+    writeXdmfGeometry(f, layout);
     for (const LevelResult& r : levels) writeLevel(f, r, study.rule, layout);
   }
   std::error_code ec;
@@ -148,6 +167,25 @@ void writeStudyCsv(const std::filesystem::path& file, const ResultLayout& layout
     out << '\n';
   }
   writeFileAtomically(file, out.str());
+}
+
+void writeStudyXdmfFile(const std::filesystem::path& xmf, const std::filesystem::path& hdf5File,
+                        const ResultLayout& layout, const std::vector<LevelResult>& levels) {
+  std::vector<StudyXdmfLevel> described;
+  for (const LevelResult& r : levels) {
+    StudyXdmfLevel level{r.level, r.records.size(), {}, {}};
+    const std::pair<const char*, std::vector<double> Moments::*> statistics[] = {
+        {"mean", &Moments::mean}, {"std", &Moments::std}, {"pce_std", &Moments::pceStd}, {"se_mean", &Moments::seMean}};
+    for (const auto& [name, member] : statistics) {
+      if (!r.fieldMoments.empty() && !(r.fieldMoments.front().*member).empty()) level.statistics.push_back(name);
+      if ((r.scalarMoments.*member).size() != layout.scalars.size()) continue;
+      for (std::size_t i = 0; i < layout.scalars.size(); ++i)
+        if (const double v = (r.scalarMoments.*member)[i]; std::isfinite(v))
+          level.scalars.emplace_back(std::string(name) + "_" + layout.scalars[i].name, v);
+    }
+    described.push_back(std::move(level));
+  }
+  writeStudyXdmf(xmf, layout, hdf5File.filename().string(), described);
 }
 
 }  // namespace peristep::host

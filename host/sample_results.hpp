@@ -12,6 +12,7 @@
 //   CSV   one row per level: samples, computed, errors, wall time, failed, then per scalar output
 //         mean_<o>, std_<o> (direct estimate with the rule's weights) and pceStd_<o> (Smolyak) or
 //         seMean_<o>, seStd_<o>, seVariance_<o> (Monte Carlo); empty cells where there is no value.
+//   XDMF  <stem>.xmf beside the HDF5 file: each level's field statistics on the grid, for ParaView
 // The HDF5 file is rewritten after every level under a temporary name and renamed, so it always holds
 // the finished levels.
 #include <filesystem>
@@ -30,5 +31,9 @@ struct StudyDescription {
 void writeStudyHdf5(const std::filesystem::path& file, const StudyDescription& study, const ResultLayout& layout,
                     const std::vector<LevelResult>& levels);
 void writeStudyCsv(const std::filesystem::path& file, const ResultLayout& layout, const std::vector<LevelResult>& levels);
+// The XDMF file beside the HDF5 file (xdmf_writer.hpp): per level the mean, std (and pce_std or
+// se_mean) of every field on the grid, for ParaView.
+void writeStudyXdmfFile(const std::filesystem::path& xmf, const std::filesystem::path& hdf5File,
+                        const ResultLayout& layout, const std::vector<LevelResult>& levels);
 
 }  // namespace peristep::host

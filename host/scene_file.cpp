@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "host_errors.hpp"
+#include "scene_overrides.hpp"
 
 namespace peristep::host {
 
@@ -317,6 +318,21 @@ void readLevels(const Context& c, const toml::table& t, Scene& scene) {
   }
 }
 
+// [output] results: the scalar outputs a study is about (their distribution is drawn).
+void readResults(const Context& c, const toml::table& t, Scene& scene) {
+  const toml::node* n = t.get("results");
+  if (!n) return;
+  const toml::array* a = n->as_array();
+  if (!a) c.fail(n->source(), "output", "results", "expected an array of output names, got " + std::string(kindOf(*n)));
+  for (const toml::node& e : *a) {
+    const std::string name = e.value<std::string>().value_or("");
+    const Variable* v = c.md().find(name);
+    if (!v || v->causality != Causality::Output || v->type != VarType::Float64 || v->isArray())
+      c.fail(e.source(), "output", "results", "\"" + name + "\" is not a scalar Float64 output" + c.suggestion(name));
+    scene.results.push_back(name);
+  }
+}
+
 }  // namespace
 
 const Setting* Scene::setting(std::string_view name) const {
@@ -325,7 +341,8 @@ const Setting* Scene::setting(std::string_view name) const {
   return nullptr;
 }
 
-Scene parseScene(std::string_view tomlText, const std::string& source, const ModelDescription& md) {
+Scene parseScene(std::string_view tomlText, const std::string& source, const ModelDescription& md,
+                 const std::vector<ParameterOverride>& overrides) {
   const Context c(source, md);
   toml::table root;
   try {
@@ -339,6 +356,10 @@ Scene parseScene(std::string_view tomlText, const std::string& source, const Mod
       c.fail(key.source(), key.str(), "", "expected a table [" + std::string(key.str()) + "], got " +
                                               std::string(kindOf(node)));
   rejectUnknownKeys(c, root, "top level", {"parameters", "loading", "output", "convergence"});
+  if (!overrides.empty()) {
+    if (!root.contains("parameters")) root.insert("parameters", toml::table{});
+    applyOverrides(*root["parameters"].as_table(), overrides, md);
+  }
 
   Scene scene;
   scene.source = source;
@@ -348,15 +369,17 @@ Scene parseScene(std::string_view tomlText, const std::string& source, const Mod
   }
   readLoading(c, root["loading"].as_table(), scene);
   if (const toml::table* out = root["output"].as_table()) {
-    rejectUnknownKeys(c, *out, "output", {"file", "csv"});
+    rejectUnknownKeys(c, *out, "output", {"file", "csv", "results"});
     scene.outputFile = text(c, *out, "output", "file");
     scene.csvFile = text(c, *out, "output", "csv");
+    readResults(c, *out, scene);
   }
   if (const toml::table* conv = root["convergence"].as_table()) readLevels(c, *conv, scene);
   return scene;
 }
 
-Scene readScene(const std::filesystem::path& file, const ModelDescription& md) {
+Scene readScene(const std::filesystem::path& file, const ModelDescription& md,
+                const std::vector<ParameterOverride>& overrides) {
   // Only a regular file of bounded size: a directory, a device (/dev/zero) or a pipe would otherwise be
   // read as an empty scene or never end.
   std::error_code ec;
@@ -374,7 +397,7 @@ Scene readScene(const std::filesystem::path& file, const ModelDescription& md) {
   std::string text(static_cast<std::size_t>(size), '\0');
   in.read(text.data(), static_cast<std::streamsize>(size));
   text.resize(static_cast<std::size_t>(in.gcount()));
-  return parseScene(text, file.string(), md);
+  return parseScene(text, file.string(), md, overrides);
 }
 
 std::string describeValues(const Setting& s, const ModelDescription& md) {

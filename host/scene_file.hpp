@@ -4,7 +4,8 @@
 //   [parameters]   name = value     numbers, integers, arrays for array variables (xi = [0.5]),
 //                                   enumeration items by name (scene = "smooth")
 //   [loading]      input = "loadFactor", from = 0.0, to = 1.0, steps = 4, startTime = 0.0, stopTime = 1.0
-//   [output]       file = "run.h5"  (HDF5 written by `peristep run`), csv = "study.csv" (`peristep convergence`)
+//   [output]       file = "run.h5"  (HDF5 written by `peristep run`), csv = "study.csv" (`peristep convergence`),
+//                  results = ["toughnessKIC"]  (scalar outputs whose distribution `peristep sample` draws)
 //   [convergence]  levels = [8, 16, 32, 64]   (nx = ny = level + 1)
 //
 // Everything is checked against the model description while parsing, so a scene that parses can
@@ -41,15 +42,23 @@ struct Scene {
   Loading loading;
   std::string outputFile;          // [output].file, empty when not given
   std::string csvFile;             // [output].csv, empty when not given
+  std::vector<std::string> results;  // [output].results: scalar Float64 outputs, empty when not given
   std::vector<std::uint64_t> levels;  // [convergence].levels, empty when not given
 
   const Setting* setting(std::string_view name) const;
 };
 
-Scene parseScene(std::string_view toml, const std::string& source, const ModelDescription& md);
+// `--set name=value` from the command line (scene_overrides.hpp): replaces or adds a [parameters] entry.
+struct ParameterOverride {
+  std::string name, value;
+};
+
+Scene parseScene(std::string_view toml, const std::string& source, const ModelDescription& md,
+                 const std::vector<ParameterOverride>& overrides = {});
 // A scene file is a regular file of at most this size (material maps of a 2000 x 2000 grid fit).
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{256} << 20;
-Scene readScene(const std::filesystem::path& file, const ModelDescription& md);
+Scene readScene(const std::filesystem::path& file, const ModelDescription& md,
+                const std::vector<ParameterOverride>& overrides = {});
 
 // Text of a value for messages and HDF5 attributes: enumeration items by name, arrays as [a, b].
 std::string describeValues(const Setting& s, const ModelDescription& md);

@@ -92,4 +92,37 @@ void writeXdmf(const std::filesystem::path& file, const ResultLayout& layout, co
   writeFileAtomically(file, xdmfDocument(layout, hdf5File, steps));
 }
 
+std::string studyXdmfDocument(const ResultLayout& layout, const std::string& hdf5File,
+                              const std::vector<StudyXdmfLevel>& levels) {
+  const std::string h5 = escape(hdf5File) + ":";
+  const std::string gridDims = dims({layout.ny, layout.nx});
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" ?>\n"
+      << "<Xdmf Version=\"3.0\">\n"
+      << "  <Domain>\n"
+      << "    <Grid Name=\"PeriStep study\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const StudyXdmfLevel& level : levels) {
+    const std::string in = "        ", group = "/level_" + std::to_string(level.level) + "/";
+    out << "      <Grid Name=\"level " << level.level << "\" GridType=\"Uniform\">\n"
+        << in << "<Time Value=\"" << level.samples << "\"/>\n"
+        << in << "<Topology TopologyType=\"2DSMesh\" Dimensions=\"" << gridDims << "\"/>\n"
+        << in << "<Geometry GeometryType=\"XY\">" << hdfItem(h5, xdmfGeometryPath(), gridDims + " 2") << "</Geometry>\n";
+    for (const std::string& statistic : level.statistics)
+      for (const ArrayInfo& f : layout.fields)
+        if (layout.onGrid(f))
+          attribute(out, statistic + "_" + f.name, "Node", hdfItem(h5, group + statistic + "/" + f.name, gridDims));
+    for (const auto& [name, value] : level.scalars) attribute(out, name, "Grid", xmlItem(value));
+    out << "      </Grid>\n";
+  }
+  out << "    </Grid>\n"
+      << "  </Domain>\n"
+      << "</Xdmf>\n";
+  return out.str();
+}
+
+void writeStudyXdmf(const std::filesystem::path& file, const ResultLayout& layout, const std::string& hdf5File,
+                    const std::vector<StudyXdmfLevel>& levels) {
+  writeFileAtomically(file, studyXdmfDocument(layout, hdf5File, levels));
+}
+
 }  // namespace peristep::host

@@ -1,6 +1,6 @@
 // Pictures: the damage colours and the plain PNG writer (bench/glass_ceramic) read back with libpng;
 // the annotated picture `peristep run` draws with gnuplot (title, colour bar, axes, legend), for hand-
-// made layouts and for a small glass-ceramic run and the default run.
+// made layouts, a small glass-ceramic run, the default run (a glass-ceramic crack) and Test 1.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -244,10 +244,11 @@ TEST_CASE("peristep run: a glass-ceramic run leaves a picture, its history and t
   CHECK(history.height == 380);
 }
 
-TEST_CASE("peristep run: the default run draws the displacement, not a material map", "[host][png][run]") {
+TEST_CASE("peristep run: Test 1 draws the displacement, not a material map", "[host][png][run]") {
   REQUIRE(gnuplotAvailable());
   TempDir dir;
-  const ProcessResult r = runProcess({PERISTEP_HOST_BINARY, "run", "--out", "d.h5"}, dir.path());
+  const ProcessResult r =
+      runProcess({PERISTEP_HOST_BINARY, "run", PERISTEP_SOURCE_DIR "/scenes/smooth.toml", "--out", "d.h5"}, dir.path());
   INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
   REQUIRE(r.exitCode == 0);
   const Picture p = readPng(dir / "d.png");
@@ -256,4 +257,25 @@ TEST_CASE("peristep run: the default run draws the displacement, not a material 
   CHECK(countColour(p, kUniformPhase) == 0);
   CHECK(countColour(p, kSoftPhase) == 0);
   CHECK(countColoured(p, 100, 70, 830, 800) > 400000);  // the plot area is a colour map
+}
+
+TEST_CASE("peristep run: the default run's picture shows both phases, the crack and a colour bar", "[host][png][run]") {
+  REQUIRE(gnuplotAvailable());
+  TempDir dir;
+  const ProcessResult r = runProcess({PERISTEP_HOST_BINARY, "run"}, dir.path());
+  INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
+  REQUIRE(r.exitCode == 0);
+  const Picture p = readPng(dir / "peristep_default.png");
+  CHECK(p.width == 1000);
+  CHECK(countColour(p, kSoftPhase) > 50000);  // glass
+  CHECK(countColour(p, kStiffPhase) > 10000);  // crystal
+  // The crack (red to yellow) in the plot area's right half: it crossed the plate.
+  std::size_t crack = 0;
+  for (std::uint32_t y = 80; y + 80 < p.height; ++y)
+    for (std::uint32_t x = p.width / 2; x < p.width - 160; ++x) {
+      const Rgb c = p.at(x, y);
+      crack += c.r > 150 && c.b < 80;
+    }
+  CHECK(crack > 500);
+  CHECK(countColoured(p, p.width - 120, 0, p.width, p.height) > 2000);  // the colour bar
 }

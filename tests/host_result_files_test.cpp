@@ -2,9 +2,6 @@
 // with the HDF5 C API and libxml2; the partial-file protocol that keeps earlier results safe.
 #include <catch2/catch.hpp>
 
-#include <libxml/parser.h>
-#include <libxml/tree.h>
-
 #include <cmath>
 #include <map>
 
@@ -12,6 +9,7 @@
 #include "host_test_support.hpp"
 #include "result_files.hpp"
 #include "xdmf_writer.hpp"
+#include "xml_test_support.hpp"
 
 using namespace peristep::host;
 using namespace host_test;
@@ -65,33 +63,6 @@ double attributeNumber(hid_t object, const char* name) {
   H5Aread(a, H5T_NATIVE_DOUBLE, &v);
   H5Aclose(a);
   return v;
-}
-
-struct XmlDoc {
-  explicit XmlDoc(const fs::path& file) : doc(xmlReadFile(file.c_str(), nullptr, XML_PARSE_NONET)) {}
-  ~XmlDoc() { xmlFreeDoc(doc); }
-  xmlDoc* doc;
-};
-
-void collect(xmlNode* node, const std::string& tag, std::vector<xmlNode*>& out) {
-  for (xmlNode* c = node; c; c = c->next) {
-    if (c->type == XML_ELEMENT_NODE && tag == reinterpret_cast<const char*>(c->name)) out.push_back(c);
-    collect(c->children, tag, out);
-  }
-}
-
-std::string prop(xmlNode* n, const char* key) {
-  xmlChar* v = xmlGetProp(n, reinterpret_cast<const xmlChar*>(key));
-  std::string s = v ? reinterpret_cast<const char*>(v) : "";
-  xmlFree(v);
-  return s;
-}
-
-std::string content(xmlNode* n) {
-  xmlChar* v = xmlNodeGetContent(n);
-  std::string s = v ? reinterpret_cast<const char*>(v) : "";
-  xmlFree(v);
-  return s;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// `peristep run` end to end through the real FMU: the default scene (Test 1, nx = ny = 33, four
-// load increments) written to HDF5 and XDMF, read back with the HDF5 C API and libxml2.
+// `peristep run` end to end through the real FMU: the default scene (a glass-ceramic plate that
+// cracks) and scenes/smooth.toml (Test 1, nx = ny = 33, four load increments) written to HDF5 and
+// XDMF, read back with the HDF5 C API and libxml2; `peristep info` and --set.
 #include <catch2/catch.hpp>
 
 #include <libxml/parser.h>
@@ -29,16 +30,62 @@ double readAttribute(hid_t object, const char* name) {
 
 }  // namespace
 
-TEST_CASE("peristep run: the default scene through the default FMU", "[host][run]") {
+TEST_CASE("peristep run: the default scene breaks bonds and grows a crack from the pre-crack", "[host][run]") {
   TempDir dir;
   const ProcessResult r = runProcess({PERISTEP_HOST_BINARY, "run"}, dir.path());
   INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
   REQUIRE(r.exitCode == 0);
-  CHECK(r.err.empty());
-  CHECK_THAT(r.out, Contains("wrote peristep_default.h5 (4 steps, 33 x 33 points)"));
-  CHECK_THAT(r.out, Contains("errorL2"));
+  CHECK_THAT(r.out, Contains("steps, 46 x 91 points), peristep_default.xmf, peristep_default.csv, "
+                             "peristep_default.png and peristep_default_history.png"));
+  for (const char* file : {"peristep_default.h5", "peristep_default.xmf", "peristep_default.csv",
+                           "peristep_default.png", "peristep_default_history.png"})
+    CHECK(fs::file_size(dir / file) > 0);
 
   const hid_t f = openHdf5(dir / "peristep_default.h5");
+  REQUIRE(f >= 0);
+  const Dataset broken = readDataset(f, "/scalars/brokenBonds"), crack = readDataset(f, "/scalars/crackLength");
+  const Dataset load = readDataset(f, "/inputs/loadDisplacement"), damage = readDataset(f, "/fields/damage");
+  H5Fclose(f);
+  REQUIRE(broken.values.size() >= 2);
+  REQUIRE(crack.values.size() == broken.values.size());
+  constexpr std::size_t ny = 46, nx = 91;
+  REQUIRE(damage.shape == std::vector<hsize_t>{broken.values.size(), ny, nx});
+  CHECK(load.values.front() == Approx(8e-9));
+  // The pre-crack's bonds are cut from the start; loading breaks many more, and the crack grows
+  // from the tip at x = -300 um across most of the 800 um plate.
+  CHECK(broken.values.front() > 0);
+  CHECK(broken.values.back() > 5 * broken.values.front());
+  CHECK(crack.values.front() == 0.0);
+  CHECK(crack.values.back() > 400e-6);
+  // Points on crack faces (damage >= 0.35) in the right half of the plate, far from the pre-crack.
+  std::size_t cracked = 0;
+  const std::size_t last = (broken.values.size() - 1) * ny * nx;
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = nx / 2 + 1; i < nx; ++i) cracked += damage.values[last + j * nx + i] >= 0.35;
+  CHECK(cracked >= 20);
+
+  // The CSV history says the same.
+  std::istringstream csv(readText(dir / "peristep_default.csv"));
+  std::string header, row, lastRow;
+  std::getline(csv, header);
+  while (std::getline(csv, row)) lastRow = row;
+  std::istringstream h(header), v(lastRow);
+  double brokenInCsv = -1;
+  for (std::string key, value; std::getline(h, key, ',') && std::getline(v, value, ',');)
+    if (key == "brokenBonds") brokenInCsv = std::stod(value);
+  CHECK(brokenInCsv == broken.values.back());
+}
+
+TEST_CASE("peristep run scenes/smooth.toml: Test 1, the smooth manufactured solution", "[host][run]") {
+  TempDir dir;
+  const ProcessResult r = runProcess({PERISTEP_HOST_BINARY, "run", PERISTEP_SOURCE_DIR "/scenes/smooth.toml"}, dir.path());
+  INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
+  REQUIRE(r.exitCode == 0);
+  CHECK(r.err.empty());
+  CHECK_THAT(r.out, Contains("wrote smooth.h5 (4 steps, 33 x 33 points)"));
+  CHECK_THAT(r.out, Contains("errorL2"));
+
+  const hid_t f = openHdf5(dir / "smooth.h5");
   REQUIRE(f >= 0);
   const Dataset x = readDataset(f, "/grid/x"), y = readDataset(f, "/grid/y");
   REQUIRE(x.shape == std::vector<hsize_t>{33, 33});
@@ -89,14 +136,14 @@ TEST_CASE("peristep run: the default scene through the default FMU", "[host][run
   H5Gclose(params);
   H5Fclose(f);
 
-  xmlDoc* xmf = xmlReadFile((dir / "peristep_default.xmf").c_str(), nullptr, XML_PARSE_NONET);
+  xmlDoc* xmf = xmlReadFile((dir / "smooth.xmf").c_str(), nullptr, XML_PARSE_NONET);
   REQUIRE(xmf != nullptr);
   CHECK(std::string(reinterpret_cast<const char*>(xmlDocGetRootElement(xmf)->name)) == "Xdmf");
   xmlFreeDoc(xmf);
-  const std::string xmfText = readText(dir / "peristep_default.xmf");
-  CHECK_THAT(xmfText, Contains("peristep_default.h5:/xdmf/step_4/damage"));
+  const std::string xmfText = readText(dir / "smooth.xmf");
+  CHECK_THAT(xmfText, Contains("smooth.h5:/xdmf/step_4/damage"));
   CHECK_THAT(xmfText, Contains("<Time Value=\"1\"/>"));
-  CHECK_FALSE(fs::exists(dir / "peristep_default.partial.h5"));
+  CHECK_FALSE(fs::exists(dir / "smooth.partial.h5"));
 }
 
 TEST_CASE("peristep run: a scene file, --fmu and --out", "[host][run]") {

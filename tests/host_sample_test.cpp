@@ -15,8 +15,12 @@
 
 #include "fmu_archive.hpp"
 #include "host_test_support.hpp"
+#include "png_test_support.hpp"
+#include "sample_plot.hpp"
 
 using namespace host_test;
+using peristep::host::samplePlotHeight;
+using peristep::host::samplePlotWidth;
 using Catch::Matchers::Contains;
 
 namespace {
@@ -273,6 +277,12 @@ TEST_CASE("peristep sample: Monte Carlo over realizations of the 002 bar stores 
       sample(dir.path(), {"bar.toml", "--rule", "mc", "--samples", "3", "--seed", "0", "--out", "bar.h5"});
   INFO(r.out << r.err);
   REQUIRE(r.exitCode == 0);
+
+  // The scene names n' and K' as its results: the plot is their two distributions.
+  CHECK_THAT(r.out, Contains("wrote bar.png"));
+  const Picture plot = readPng(dir / "bar.png");
+  CHECK(plot.width == samplePlotWidth(2));
+  CHECK(plot.height == samplePlotHeight(2));
 
   const hid_t f = openHdf5(dir / "bar.h5");
   REQUIRE(f >= 0);

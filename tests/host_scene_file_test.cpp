@@ -158,7 +158,7 @@ TEST_CASE("scene: unknown tables and keys, bad loading and levels", "[host][scen
   CHECK_THAT(errorOf("[paramaters]\n"), Contains("[top level] paramaters: unknown key"));
   CHECK_THAT(errorOf("title = 1\n"), Contains("expected a table [title]"));
   CHECK_THAT(errorOf("[output]\nfile = 3\n"), Contains("[output] file: expected a string"));
-  CHECK_THAT(errorOf("[output]\nfolder = \"x\"\n"), Contains("[output] folder: unknown key (expected one of: file, csv)"));
+  CHECK_THAT(errorOf("[output]\nfolder = \"x\"\n"), Contains("[output] folder: unknown key (expected one of: file, csv, results)"));
   CHECK_THAT(errorOf("[loading]\ninput = \"loadFctor\"\nfrom = 0\nto = 1\n"),
              Contains("[loading] input: unknown variable \"loadFctor\" (did you mean loadFactor?)"));
   CHECK_THAT(errorOf("[loading]\ninput = \"Lx\"\nfrom = 0\nto = 1\n"), Contains("Lx is not a scalar floating-point input"));
@@ -175,4 +175,14 @@ TEST_CASE("scene: unknown tables and keys, bad loading and levels", "[host][scen
 TEST_CASE("scene: missing file", "[host][scene]") {
   REQUIRE_THROWS_WITH(readScene("/nonexistent/scene.toml", model()),
                       "/nonexistent/scene.toml: cannot open the scene file");
+}
+
+TEST_CASE("scene: [output] results names scalar outputs a sample study is about", "[host][scene]") {
+  const Scene s = parse("[output]\nresults = [\"errorL2\"]\n");
+  CHECK(s.results == std::vector<std::string>{"errorL2"});
+  CHECK(parse("[output]\nfile = \"a.h5\"\n").results.empty());
+  CHECK_THAT(errorOf("[output]\nresults = [\"errorL3\"]\n"), Contains("[output] results: \"errorL3\" is not a scalar Float64 output (did you mean errorL2?)"));
+  CHECK_THAT(errorOf("[output]\nresults = [\"ux\"]\n"), Contains("\"ux\" is not a scalar Float64 output"));
+  CHECK_THAT(errorOf("[output]\nresults = [\"nx\"]\n"), Contains("is not a scalar Float64 output"));
+  CHECK_THAT(errorOf("[output]\nresults = \"errorL2\"\n"), Contains("expected an array of output names"));
 }

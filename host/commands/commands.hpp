@@ -9,12 +9,14 @@ namespace peristep::host {
 
 struct InfoOptions {
   std::string fmu;
+  std::string name;  // a variable or scene to show in full; empty: the summary of all
 };
 
 struct RunOptions {
   std::string scene;  // empty: the built-in default scene (scenes/default.toml)
   std::string fmu;
   std::string out;    // overrides [output].file
+  std::vector<std::string> set;  // --set name=value, in order
   bool verbose = false;
 };
 
@@ -22,6 +24,7 @@ struct ConvergenceOptions {
   std::string scene;
   std::string fmu;
   std::string out;    // overrides [output].csv; the plot goes next to it as .png
+  std::vector<std::string> set;  // --set name=value, in order
   bool verbose = false;
 };
 
@@ -34,6 +37,7 @@ struct SampleOptions {
   std::vector<std::uint64_t> samples;  // mc: sample counts
   bool nested = false;
   std::uint64_t seed = 1;
+  std::vector<std::string> set;        // --set name=value, in order
   bool verbose = false;
   std::string shard;                   // "K/N": run only the K-th of N parts, write only samples
   bool merge = false;                  // no sample run: statistics and files from the stored samples

@@ -8,6 +8,7 @@
 #include "../host_errors.hpp"
 #include "../level_runner.hpp"
 #include "../progress.hpp"
+#include "../scene_overrides.hpp"
 #include "commands.hpp"
 #include "opened_fmu.hpp"
 
@@ -15,7 +16,10 @@ namespace peristep::host {
 
 int convergenceCommand(const ConvergenceOptions& options) {
   const OpenedFmu fmu(options.fmu);
-  const Scene scene = loadScene(options.scene, fmu.md);
+  for (const std::string& set : options.set)
+    if (const std::string name = parseOverride(set).name; name == "nx" || name == "ny")
+      throw InputError("--set " + set + ": a refinement study sets nx and ny from its [convergence] levels");
+  const Scene scene = loadScene(options.scene, fmu.md, options.set);
   if (scene.levels.empty())
     throw InputError(options.scene + ": [convergence] levels: missing (e.g. levels = [8, 16, 32, 64])");
   std::filesystem::path csv = options.out.empty() ? scene.csvFile : options.out;

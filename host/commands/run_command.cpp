@@ -1,5 +1,6 @@
-// `peristep run [SCENE] [--fmu PATH] [--out FILE]`: one loading scenario, results to HDF5 + XDMF, the
-// history of the scalar outputs to CSV, a picture of the last step and a plot of the history (gnuplot).
+// `peristep run [SCENE] [--fmu PATH] [--out FILE] [--set NAME=VALUE]...`: one loading scenario, results
+// to HDF5 + XDMF, the history of the scalar outputs to CSV, a picture of the last step (of a bar: its
+// stress-strain path) and a plot of the history (gnuplot).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include "../result_files.hpp"
 #include "../run_history.hpp"
 #include "../run_picture.hpp"
+#include "../stress_strain_picture.hpp"
 #include "../simulation.hpp"
 #include "commands.hpp"
 #include "opened_fmu.hpp"
@@ -93,7 +95,10 @@ std::vector<std::string> writeExtras(const std::filesystem::path& h5, const Resu
     else std::cerr << "peristep: no " << png.string() << ": " << problem << '\n';
   };
   const std::filesystem::path picture = std::filesystem::path(h5).replace_extension(".png");
-  draw(picture, writeRunPicture(picture, layout, recorded.back(), {scene, recorded.size(), recorded.size(), inputUnit}));
+  if (isBarRun(layout, history))  // nothing on the plate grid: the bar's stress-strain path instead
+    draw(picture, writeStressStrainPicture(picture, layout, history, md.modelName + ": " + scene));
+  else
+    draw(picture, writeRunPicture(picture, layout, recorded.back(), {scene, recorded.size(), recorded.size(), inputUnit}));
   std::filesystem::path plot = h5;
   plot.replace_filename(h5.stem().string() + "_history.png");
   draw(plot, plotHistory(plot, layout, history, md.modelName + ": " + scene, inputUnit));
@@ -110,7 +115,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 int runCommand(const RunOptions& options) {
   const OpenedFmu fmu(options.fmu);
-  const Scene scene = loadScene(options.scene, fmu.md);
+  const Scene scene = loadScene(options.scene, fmu.md, options.set);
   const std::filesystem::path out = outputPath(options, scene);
 
   const FmuLibrary library(fmu.archive.binaryFile(fmu.md.coSimulationIdentifier));
@@ -145,7 +150,9 @@ int runCommand(const RunOptions& options) {
     liveBar = &bar.emplace("run", simulation.schedule().size());
     for (const Increment& inc : simulation.schedule()) {
       if (!simulation.mayContinue()) {
-        std::cerr << "peristep: the component asked to stop after step " << recorded.size() << '\n';
+        // Not an error: a fracture scene ends its test this way once the crack has crossed the specimen.
+        std::cerr << "peristep: the component ended the run after step " << recorded.size() << " of "
+                  << simulation.schedule().size() << " (terminateSimulation: the scene's test is over)\n";
         break;
       }
       StepValues step = simulation.step(inc);

@@ -1,8 +1,9 @@
 // `peristep sample SCENE --rule tensor|smolyak|mc (--level L[,L...] | --samples Q[,Q...])`: the scene
 // at every point of a rule in the random space the component declares, moments of every output with
 // the rule's weights, errors against the exact moments where the component has them, and wall time,
-// per level. Finished samples are kept beside the result file, so an interrupted study restarted with
-// the same command recomputes none of them.
+// per level, to HDF5 with an XDMF file for the field statistics, a CSV table and a plot (with the
+// distribution of the study's results, e.g. K_IC). Finished samples are kept beside the result file,
+// so an interrupted study restarted with the same command recomputes none of them.
 // Under mpirun the ranks share each level's samples (dynamic scheduling, mpi_work_queue.hpp) and rank 0
 // writes the results; --shard K/N runs a fixed part for batch arrays, --merge the statistics afterwards.
 #include <cmath>
@@ -141,6 +142,35 @@ std::size_t printFailures(const std::vector<LevelResult>& levels, SampleRule rul
   return total;
 }
 
+// The results the study is about, over the last level's successful samples: the scalars the scene names
+// in [output] results, else the fracture toughness where the samples computed one.
+std::vector<ResultDistribution> resultDistributions(const Scene& scene, const ResultLayout& layout, const LevelResult& last) {
+  std::vector<std::string> names = scene.results;
+  if (names.empty()) names = {"toughnessKIC"};
+  std::vector<ResultDistribution> out;
+  for (const std::string& name : names)
+    for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
+      if (layout.scalars[i].name != name) continue;
+      ResultDistribution r{name, layout.scalars[i].unit, {}, NAN, NAN, NAN, NAN, ""};
+      bool computed = !scene.results.empty();  // a named result is drawn even where it is zero
+      for (const SampleRecord& s : last.records)
+        if (std::isfinite(s.scalars[i])) r.values.push_back(s.scalars[i]), computed |= s.scalars[i] != 0;
+      if (!computed || r.values.empty() || !last.momentsComputed) continue;
+      const Moments& m = last.scalarMoments;
+      r.mean = m.mean[i];
+      r.std = m.std[i];
+      if (!m.seMean.empty() && std::isfinite(m.seMean[i])) {
+        r.low = r.mean - interval95(m.seMean[i]), r.high = r.mean + interval95(m.seMean[i]);
+        r.interval = "95% interval of the mean";
+      } else if (m.seMean.empty()) {
+        r.low = r.mean - m.std[i], r.high = r.mean + m.std[i];
+        r.interval = "mean -+ std";
+      }
+      out.push_back(std::move(r));
+    }
+  return out;
+}
+
 int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   SamplingOptions rule;
   rule.rule = parseRule(options.rule);
@@ -161,7 +191,7 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   const bool root = mpi.rank() == 0, writes = root && !sharded;
 
   const OpenedFmu fmu(options.fmu);
-  const Scene scene = loadScene(options.scene, fmu.md);
+  const Scene scene = loadScene(options.scene, fmu.md, options.set);
   std::filesystem::path out = options.out;
   if (out.empty())
     out = std::filesystem::path(options.scene).filename().replace_extension("").string() + "_" + options.rule + ".h5";
@@ -189,6 +219,11 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
                                {{"nested", std::vector<std::int64_t>{options.nested}},
                                 {"seed", std::vector<std::uint64_t>{options.seed}},
                                 {"sampleDirectory", store.directory().string()}}};
+  if (!options.set.empty()) {  // the study's parameters differ from the scene file's: say how
+    std::string set;
+    for (const std::string& s : options.set) set += (set.empty() ? "" : " ") + s;
+    description.attributes.push_back({"set", set});
+  }
   std::vector<LevelResult> levels;
   LevelWork shardWork;
   for (std::uint64_t level : rule.levels) {
@@ -220,6 +255,7 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
     r.seconds = bar.elapsedSeconds();
     levels.push_back(std::move(r));
     writeStudyHdf5(out, description, study.layout(), levels);  // finished levels are on disk at once
+    writeStudyXdmfFile(std::filesystem::path(out).replace_extension(".xmf"), out, study.layout(), levels);
     writeStudyCsv(csv, study.layout(), levels);
   }
   if (sharded) {
@@ -232,11 +268,16 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
   compareWithLast(levels, study.layout());
   writeStudyHdf5(out, description, study.layout(), levels);
   writeStudyCsv(csv, study.layout(), levels);
+  const std::filesystem::path xmf = std::filesystem::path(out).replace_extension(".xmf");
+  writeStudyXdmfFile(xmf, out, study.layout(), levels);
   printLevels(levels, study.layout(), study.hasExactMoments(), rule.rule);
   const std::size_t failed = printFailures(levels, rule.rule);
-  std::cout << plotSampleStudy(csv, fmu.md.modelName + ": " + options.scene + ", rule " + options.rule) << '\n';
-  std::cout << "wrote " << out.string() << " and " << csv.string() << " (samples kept in " << store.directory().string()
-            << ")\n";
+  const std::string sceneName = std::filesystem::path(options.scene).filename().string();
+  std::cout << plotSampleStudy(csv, fmu.md.modelName + ": " + sceneName + ", rule " + options.rule,
+                               resultDistributions(scene, study.layout(), levels.back()))
+            << '\n';
+  std::cout << "wrote " << out.string() << ", " << xmf.string() << " and " << csv.string() << " (samples kept in "
+            << store.directory().string() << ")\n";
   return failed > 0 ? kExitRunError : 0;
 }
 
