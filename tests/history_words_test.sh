@@ -5,14 +5,17 @@
 #
 #   history_words_test.sh          (from anywhere: the repository is found from this script's location)
 #
+# Outside a git work tree it prints PERISTEP_SKIP and exits 0 (ctest reports it skipped), or fails when CI is set.
 # Prints every offending line as path:line:text and exits 1, or prints how many text files it read and exits 0.
 # Binary files (grep -I) are skipped; this script is left out, since it has to name the pattern.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(git -C "$here" rev-parse --show-toplevel 2>/dev/null) || {
-  echo "history words: $here is not inside a git work tree" >&2
-  exit 2
+  # A source tree without git (an unpacked archive) has no list of tracked files: skipped, failed in CI.
+  [[ -n "${CI:-}" ]] && { echo "history words: $here is not inside a git work tree" >&2; exit 2; }
+  echo "PERISTEP_SKIP: history words: $here is not inside a git work tree"
+  exit 0
 }
 cd "$root"
 self=$(realpath --relative-to="$root" "$here/$(basename "${BASH_SOURCE[0]}")")
