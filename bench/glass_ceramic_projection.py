@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Projected wall time of the glass-ceramic toughness study at a finer grid on a cluster (issue 15).
+"""Projected wall time of the glass-ceramic toughness study at a finer grid on a cluster.
 
 Reads the per-sample wall times that `bench/glass_ceramic_study.sh` left in OUT_DIR's sample stores
 (one thread per MPI rank), scales each by the measured cost ratio of one specimen at the target grid to

@@ -144,8 +144,8 @@ int main(int argc, char** argv) {
     std::printf("\n003 Sec. 5.1: s0 = 0.11 (0.145 from the MD data directly)\n");
 
     // The project's s0 step: the prediction's displacement error on the same frames (003:(42) names no s0 on
-    // the MD samples, bench/README.md "Critical stretch"). It runs the damaged model forward, which is stable
-    // only with K >= 0 (bench/README.md "A stable learned model").
+    // the MD samples, docs/decisions/0016-s0-from-prediction-error.md). It runs the damaged model forward, which
+    // is stable only with K >= 0 (docs/decisions/0015-learned-model-nonnegative-kernel.md).
     if (std::any_of(f.kernel.D.begin(), f.kernel.D.end(), [](double d) { return d < 0; })) {
       std::printf("no s0 by the prediction error: the kernel has negative Bernstein coefficients, and with a "
                   "sign-changing kernel the damaged model is unstable (use --nonnegative-kernel)\n");

@@ -3,16 +3,16 @@
 // - Idle worker threads of OpenMP (libgomp) and OpenBLAS spin before they sleep: libgomp for up to 300k
 //   iterations after each parallel region, OpenBLAS for 2^28 cycles (with sched_yield) after each BLAS call.
 //   The fracture drivers alternate short OpenMP loops with MUMPS and BLAS calls, so on two cores the spinning
-//   threads take the CPU from the working ones (bench/README.md, "Issue 14, session 8": h = 8 um, f = 0.2,
-//   user + system time 57 -> 37 s).
+//   threads take the CPU from the working ones (h = 8 um, f = 0.2: user + system time 57 -> 37 s;
+//   docs/decisions/0012-process-settings-and-memory.md).
 // - glibc's malloc on transparent huge pages (glibc >= 2.35): the crack zone allocates arrays of tens to
 //   hundreds of MB afresh at every factorization (its own and MUMPS'), and with 4 KiB pages the first touch
 //   of each page is a fault (h = 4 um, f = 0.8: 4.4 million faults; with huge pages 0.26 million and 14% less
-//   wall time; bench/README.md, "Issue 14, session 31"). The component itself leaves the importer's allocator
-//   alone; the programs that own the process ask for it.
+//   wall time; docs/decisions/0012-process-settings-and-memory.md). The component itself leaves the importer's
+//   allocator alone; the programs that own the process ask for it.
 // - OpenBLAS' kernels: Debian 12's OpenBLAS 0.3.21 picks them by CPU model and falls back to its SSE3 (Prescott)
 //   kernels on models it does not know (Intel Xeon model 207: sgemm at n = 2000 on two cores 65 GFlop/s, with
-//   SkylakeX' kernels 318; bench/README.md, "Issue 14, session 43"). The kernels are chosen here by the CPU's
+//   SkylakeX' kernels 318; docs/decisions/0006-openblas-kernels-by-cpu.md). The kernels are chosen here by the CPU's
 //   features, as later OpenBLAS releases do for models they do not know.
 // The program starts itself afresh when this set anything (glibc reads its tunables at start).
 #include <unistd.h>

@@ -99,8 +99,8 @@ TEST_CASE("MUMPS with a Schur set: S, condensation and expansion give A's soluti
 }
 
 TEST_CASE("the dense zone solver's release returns its matrix and LU to the system", "[solver][crack-zone]") {
-  // Arrays of 52 MB each, above glibc's largest mmap threshold, so a free unmaps them. (Assigning {} to them, as
-  // this did before session 43, kept their capacity: the run's peak held the last zone's arrays.)
+  // Arrays of 52 MB each, above glibc's largest mmap threshold, so a free unmaps them. (Assigning {} to them
+  // keeps their capacity: the run's peak then held the last zone's arrays.)
   const int n = 2600;
   std::vector<double> S(static_cast<std::size_t>(n) * n, 0.0);
   for (int i = 0; i < n; ++i) S[static_cast<std::size_t>(i) * (n + 1)] = 1.0;
@@ -366,7 +366,7 @@ TEST_CASE("points hanging by one bond, joined to the zone with their neighbours:
           "[solver][crack-zone]") {
   // Each free point outside the zone in turn. (Left out of the zone, one such point on this small plate does not
   // defeat the single-precision factors: the fall-backs they caused were measured at h = 8 um, f = 0.4, seed 87,
-  // bench/README.md, "Issue 14, session 18".)
+  // docs/decisions/0011-zone-placement.md.)
   const std::vector<std::size_t> core = LpsPlate().breakBonds(0, 9);
   int candidates = 0;
   const LpsPlate shape;

@@ -8,7 +8,7 @@ using namespace peristep;
 
 // 001 Sec. 6.1.2, Fig. 7 for eps = 8 mm: the rate estimate 001:(106) from h = eps/2, eps/4, eps/8.
 // The test covers 0-6 us (about 30 s of CPU); the full 34 us run is bench/plexiglass_crack
-// ("rates 8 34"), see bench/README.md.
+// ("rates 8 34"), see docs/verification.md.
 TEST_CASE("Plexiglass crack, eps = 8 mm: the rate estimate 001:(106) stays >= 1 (first 6 us)", "[dynamics][slow]") {
   const double endTime = 6e-6;
   std::vector<DynamicScene> scenes;

@@ -1,5 +1,5 @@
 // An allocation that fails inside an OpenMP region (std::bad_alloc in the LPS assembly killed the
-// importer with SIGABRT, issue 13) reaches the caller as an exception, and the FMI functions turn it
+// importer with SIGABRT) reaches the caller as an exception, and the FMI functions turn it
 // into fmi3Error with the one message "out of memory". This program replaces the global operator new:
 // while armed, every allocation made by an OpenMP worker thread (not the calling thread: an exception
 // there has no caller to go to) inside a parallel region throws.

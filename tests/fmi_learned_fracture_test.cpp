@@ -76,7 +76,7 @@ TEST_CASE("learnedFracture: sample III gives bench/learn_predict's errors, and a
     else CHECK(uy == first);
   }
   REQUIRE(s.fmu.fmi3FreeFMUState(s.instance, &state) == fmi3OK);
-  // bench/README.md, "Prediction": III training, h = 5 A, the learned s0 = 0.3028: e_u 14.5%, e_phi 36.1%
+  // docs/verification.md, 003: III training, h = 5 A, the learned s0 = 0.3028: e_u 14.5%, e_phi 36.1%
   // (003: 27 / 9).
   CHECK(data().model.s0 == Approx(0.3028).epsilon(1e-3));
   CHECK(s.getFloat64(PERISTEP_VR_PREDICTION_ERROR_U).at(0) == Approx(0.145).epsilon(3e-3));
@@ -90,7 +90,7 @@ TEST_CASE("learnedFracture with 003's s0 = 0.11 gives bench/learn_predict --s0 0
   const double interval = data().intervalSeconds[0];
   REQUIRE(s.initialize(0, 40 * interval) == fmi3OK);
   REQUIRE(s.step(0, 40 * interval) == fmi3OK);
-  // bench/README.md, "Prediction": e_u 49.1%, e_phi 53.2%.
+  // docs/verification.md, 003: e_u 49.1%, e_phi 53.2%.
   CHECK(s.getFloat64(PERISTEP_VR_PREDICTION_ERROR_U).at(0) == Approx(0.4910).epsilon(1e-3));
   CHECK(s.getFloat64(PERISTEP_VR_PREDICTION_ERROR_DAMAGE).at(0) == Approx(0.5316).epsilon(1e-3));
 }

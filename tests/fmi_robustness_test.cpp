@@ -1,5 +1,5 @@
 // Legal input that would run for hours or exhaust memory comes back at once through the C ABI with
-// fmi3Error and one message that gives the estimate, the limit and what to change (issue 13); long
+// fmi3Error and one message that gives the estimate, the limit and what to change; long
 // initializations and steps report progress in the log category logProgress, which is off by default
 // and does not change results.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Progress inside a step (issue 17): the component's logProgress messages reach the host's listener
+// Progress inside a step: the component's logProgress messages reach the host's listener
 // while fmi3DoStep runs, so the bar can show the sub-iterations and broken bonds of a running crack.
 #include <catch2/catch.hpp>
 #include <map>

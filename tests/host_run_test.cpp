@@ -185,7 +185,7 @@ TEST_CASE("peristep info: every variable with causality, type and unit", "[host]
 
 // 003's prediction through the host: scenes/learned_fracture.toml runs sample III from the FMU's resources
 // (unpacked from PeriStep.fmu with the rest) and its CSV ends with the errors over frames 1-40 that
-// bench/learn_predict prints with the learned s0 (14.5% / 36.1%, bench/README.md "Prediction").
+// bench/learn_predict prints with the learned s0 (14.5% / 36.1%, docs/verification.md).
 TEST_CASE("peristep run scenes/learned_fracture.toml: the learned model's errors against 40 MD frames",
           "[host][run][learned]") {
   TempDir dir;

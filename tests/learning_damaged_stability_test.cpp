@@ -1,7 +1,8 @@
-// Why the project predicts with K >= 0, the uncorrected dilatation and no free-surface sums (bench/README.md,
-// "Prediction"): then the damaged operator of 003:(28)-(30) is the gradient of a nonnegative energy at any
-// damage (DamagedLpsOperator::setCorrectedDilatation), and no mode of rho u'' = -L u grows; with 003's
-// corrected dilatation (31) and lambda < mu (graphene's) some do, with or without the free-surface sums.
+// Why the project predicts with K >= 0, the uncorrected dilatation and no free-surface sums
+// (docs/decisions/0015-learned-model-nonnegative-kernel.md): then the damaged operator of 003:(28)-(30) is the
+// gradient of a nonnegative energy at any damage (DamagedLpsOperator::setCorrectedDilatation), and no mode of
+// rho u'' = -L u grows; with 003's corrected dilatation (31) and lambda < mu (graphene's) some do, with or
+// without the free-surface sums.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -6,7 +6,7 @@ namespace peristep {
 
 // Empties a container and returns its storage to the allocator. (v = {} would not: for a std::vector it
 // assigns an empty list and keeps the capacity, which held 1.2 GB of old factors through the next
-// factorization at h = 2 um; bench/README.md, "Issue 14, session 43".)
+// factorization at h = 2 um; docs/decisions/0012-process-settings-and-memory.md.)
 template <class Container>
 void freeStorage(Container& c) {
   Container().swap(c);

@@ -39,7 +39,7 @@ struct LearnedModel {
 };
 
 // The project's learned model: the validation choice of bench/learn_lps --nonnegative-kernel (K >= 0: with 003's
-// sign-changing kernels the damaged operator is unstable, bench/README.md "Prediction").
+// sign-changing kernels the damaged operator is unstable, docs/decisions/0015-learned-model-nonnegative-kernel.md).
 constexpr double kLearnedDelta = 10.0;
 constexpr int kLearnedOrder = 2;
 
@@ -49,7 +49,7 @@ constexpr double kPaperSpacing = 5.0;
 
 // Choices of a prediction that bench/learn_predict varies. The defaults are the project's model, which the scene
 // runs: stable at any damage with K >= 0 (tests/learning_damaged_stability_test.cpp); 003's set-up is the
-// free-surface sums, the corrected dilatation and kPaperSpacing (bench/README.md, "Prediction").
+// free-surface sums, the corrected dilatation and kPaperSpacing (docs/verification.md, 003).
 struct PredictionVariant {
   double layer = 1.0;                // width of III's prescribed edge layers, in delta
   bool freeSurface = false;          // the free-surface sums of 003:(30) (made for the corrected dilatation)

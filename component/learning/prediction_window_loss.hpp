@@ -1,8 +1,8 @@
 #pragma once
 // The damage-criterion step by the prediction's error instead of the equation residual 003:(42): on the MD
 // fracture samples (42) falls monotonically towards s0 -> 0 (the learned model's force misfits the frames'
-// accelerations more than no force at all; bench/README.md, "Critical stretch"), so it names no s0. Here the
-// prediction is restarted at frame `first` of the sample (u^0 = that frame, its frame velocity, the largest
+// accelerations more than no force at all; docs/decisions/0016-s0-from-prediction-error.md), so it names no s0.
+// Here the prediction is restarted at frame `first` of the sample (u^0 = that frame, its frame velocity, the largest
 // stretches of frames 0..first) and run to frame `last`; the loss is its squared displacement error summed
 // over frames first+1..last, minimized over s0 by learning/critical_stretch_fit.hpp.
 #include <cstddef>

@@ -107,7 +107,8 @@ bool bondIntact(const Neighbours& nb, const std::vector<std::uint8_t>& intact, s
 // dilatation that averages the tip singularity, O(delta^(-3/2)) on O(delta^2) of area: a net force
 // O(sqrt(delta)) at the tip that caps the Test 3 rate near 1/2 (nu = 0.3: 0.75, 0.62, 0.56 over
 // pi/16 ... pi/128). Such points keep the intact bonds and the corrected dilatation 000:(3.20) only,
-// whose pairwise antisymmetric forces exert no net force (rates 1.17, 1.18, 1.18; bench/README.md).
+// whose pairwise antisymmetric forces exert no net force (rates 1.17, 1.18, 1.18; see
+// docs/decisions/0017-free-surface-terms-near-tips.md).
 bool surfaceEndsInHorizon(const PointCloud& c, const Neighbours& nb, const std::vector<std::uint8_t>& intact,
                           std::size_t p) {
   for (std::size_t kb = nb.begin(p); kb < nb.end(p); ++kb) {

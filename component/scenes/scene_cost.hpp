@@ -1,7 +1,7 @@
 #pragma once
 // What a scene set-up will cost, estimated from its parameters alone before anything is allocated, so
 // that a request beyond the limits is refused at once with the estimate (instead of exhausting memory
-// or running for hours). The models are fitted to measurements (bench/README.md and the commit that
+// or running for hours). The models are fitted to measurements (docs/performance.md and the commit that
 // added this file) and are meant to be right within a factor of about 3, not exact.
 #include <string>
 

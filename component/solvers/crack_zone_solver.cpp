@@ -39,9 +39,9 @@ double backwardError(const CsrMatrix& A, std::span<const double> b, std::span<co
 }
 
 // Horizons around the rows changed beyond the zone that the patch correction takes in (one or four cost zones
-// and substitutions at full size, three, four or six at h = 4 um; session 38), and its largest size as a share
-// of the unknowns: at h = 8 um patches of ~1300 of some 20,000 unknowns cost more in LUs and products than they
-// saved in substitutions (bench/README.md, "Issue 14, sessions 35, 36 and 38").
+// and substitutions at full size, three, four or six at h = 4 um), and its largest size as a share of the
+// unknowns: at h = 8 um patches of ~1300 of some 20,000 unknowns cost more in LUs and products than they saved
+// in substitutions (docs/decisions/0010-patch-correction.md).
 constexpr int kPatchHorizons = 2;
 constexpr std::size_t kPatchShare = 20;
 
@@ -172,8 +172,9 @@ std::vector<std::size_t> CrackZoneSolver::dissectionOrder() const {
 std::vector<std::int32_t> CrackZoneSolver::pivotOrder() const {
   // The points outside the zone in the order of the nested dissection of all points, then the zone. Leaving
   // the zone's points out of an elimination order only removes fill paths among the others; the zone, eliminated
-  // last, separates what it cuts. One METIS call per zone cost 0.83 s of its ~9 s at h = 2 um (session 44); the
-  // whole-graph order gives 3-5% more factor entries and the same crack histories (bench/README, session 45).
+  // last, separates what it cuts. One METIS call per zone cost 0.83 s of its ~9 s at h = 2 um; the whole-graph
+  // order gives 3-5% more factor entries and the same crack histories
+  // (docs/decisions/0007-one-nested-dissection-and-column-counts.md).
   std::vector<std::int32_t> position(static_cast<std::size_t>(dofs_.size), -1);
   std::int32_t next = 0;
   for (std::size_t p : dissection_) {

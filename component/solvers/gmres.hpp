@@ -3,8 +3,8 @@
 // since it was computed) instead of refactorizing. It can keep the directions it found for the next solves with
 // the same preconditioner (GCRO with a recycled space: de Sturler 1999; Parks et al. 2006 recycle across the
 // systems of a growing crack): while a crack-zone factorization serves a matrix that changed outside the zone,
-// each solve otherwise searches again for all the changes since the factorization (bench/README.md, "Issue 14,
-// session 21"); with the directions kept, a solve searches only what is new.
+// each solve otherwise searches again for all the changes since the factorization; with the directions kept,
+// a solve searches only what is new (docs/decisions/0002-recycled-gmres.md).
 #include <cstdint>
 #include <functional>
 #include <span>

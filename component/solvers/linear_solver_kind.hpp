@@ -13,7 +13,7 @@ namespace peristep {
 enum class LinearSolverKind { Umfpack, UmfpackAmd, SparseLu, BicgstabIlut };
 
 // Every linear solver, its name and description (the FMI enumeration PeriStep.LinearSolver lists these).
-// Umfpack is the fastest here, see bench/README.md.
+// Umfpack is the fastest here, see docs/decisions/0013-umfpack-metis-default-solver.md.
 inline constexpr std::array<Option<LinearSolverKind>, 4> kLinearSolverOptions{{
     {LinearSolverKind::Umfpack, "umfpack", "UMFPACK, 64-bit indices, METIS ordering"},
     {LinearSolverKind::UmfpackAmd, "umfpackAmd", "UMFPACK with its default AMD/COLAMD ordering"},

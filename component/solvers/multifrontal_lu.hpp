@@ -2,7 +2,7 @@
 // Multifrontal sparse LU in single precision without pivoting, with a set of unknowns Z eliminated last
 // (their dense Schur complement is the result, not factored). The pattern is taken as that of A + A^T; the
 // values may be unsymmetric. Written for the fracture driver's scaled stiffness D A D, whose pivots MUMPS
-// never delayed and whose crack is the same without pivoting (bench/README, issue 14, session 41); a zero
+// never delayed and whose crack is the same without pivoting (docs/decisions/0001-own-single-precision-lu.md); a zero
 // or non-finite pivot throws SolverFailure. The factors are stored front by front in the order the
 // substitutions read them, so that a substitution streams them once.
 #include <cstdint>

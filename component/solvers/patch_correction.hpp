@@ -5,7 +5,7 @@
 // multiplicative Schwarz step (E: extension from the patch by zeros):
 //   x = E A_PP^-1 E^T v,   x += M^-1 (v - A x),   x += E A_PP^-1 E^T (v - A x).
 // The products with A touch the patch and the horizon around it only. As GMRES' preconditioner it takes away
-// iterations and with them zones (bench/README.md, "Issue 14, session 36").
+// iterations and with them zones (docs/decisions/0010-patch-correction.md).
 #include <cstdint>
 #include <functional>
 #include <memory>

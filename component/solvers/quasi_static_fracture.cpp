@@ -21,22 +21,24 @@ constexpr double kSpringRatio = 1e-8;
 constexpr int kMaxSubIterations = 100000;
 // GMRES stops at this relative residual. The springs make the matrix ill-conditioned, and 1e-10 was not
 // enough: at h = 8 um it gave another crack history than a direct solve of every changed matrix;
-// 1e-13 gives the same history (bench/README.md) for about 10% more iterations.
+// 1e-13 gives the same history (docs/decisions/0003-crack-zone-driver.md) for about 10% more iterations.
 constexpr double kKrylovTolerance = 1e-13;
 constexpr int kKrylovRestart = 40;
 // GMRES directions kept for a zone's later solves. Each Arnoldi step reads them twice: with all of a zone's (up to
-// its price, 50 at h = 2 um) the full size ran 2% slower than without, with 16 4% faster (bench/README.md).
+// its price, 50 at h = 2 um) the full size ran 2% slower than without, with 16 4% faster
+// (docs/decisions/0002-recycled-gmres.md).
 constexpr std::size_t kKeptDirections = 16;
 // A sub-iteration may decide its breaks on a solution refined only to this backward error, when no bond's stretch
 // lies within the error bound of its s0. The bound is this multiple of the last correction's largest displacement
-// change: the error left was at most 6.4e-6 of it in 599 such solves at h = 8 and 4 um (bench/README.md, "Issue 14,
-// session 22"). GMRES solves refine to tolerance: the step of their last iteration bounded the error only to 4e-2.
+// change: the error left was at most 6.4e-6 of it in 599 such solves at h = 8 and 4 um
+// (docs/decisions/0009-settled-verdicts.md). GMRES solves refine to tolerance: the step of their last iteration
+// bounded the error only to 4e-2.
 constexpr double kSettleTolerance = 1e-6;
 constexpr double kErrorPerChange = 1e-3;
 // GMRES iterations allowed where refinement with single-precision zone factors diverged.
 constexpr int kRescueIterations = 200;
 // The crack zone: points whose bonds reach this fraction of their critical stretch, the closest first,
-// up to this many unknowns in the dense Schur complement (bench/README.md, "Issue 14").
+// up to this many unknowns in the dense Schur complement (docs/decisions/0003-crack-zone-driver.md).
 constexpr double kZoneRatio = 0.1;
 constexpr std::size_t kZoneUnknowns = 3000, kZoneShare = 10;  // at most a tenth of the unknowns
 // A point whose u block has an eigenvalue below this fraction of its largest hangs by its spring in one
@@ -45,7 +47,7 @@ constexpr double kNearlyFloatingRatio = 1e-4;
 
 // A numeric factorization priced in preconditioned GMRES iterations (one solve with the factors and one
 // product with A each). Measured with UMFPACK+METIS on glass-ceramic matrices of 16k and 62k unknowns
-// (bench/README.md, "Brittle fracture"): 28 and 33 solves per factorization, about 2.2 n^(1/4). A
+// (docs/decisions/0003-crack-zone-driver.md): 28 and 33 solves per factorization, about 2.2 n^(1/4). A
 // count, not a clock, so that the solver's choices, and with them the run, never depend on the load of
 // the machine.
 int factorizationCostInIterations(std::int64_t unknowns) {
@@ -276,8 +278,8 @@ std::vector<double> QuasiStaticFracture::zonePriority() const {
   // First the points of the bonds the last sub-iteration broke: where the zone missed, damage goes on (the
   // crack tip, a second crack, a corner). Then the points closest to breaking under the last solution, ranked
   // by stretch / s0 (< 1). Against all bonds broken since the last zone (a running crack's path behind its
-  // tip, where little breaks again) this cut the zones from 73 to 66 at h = 4 um, f = 0.8 (bench/README.md,
-  // "Issue 14, session 25").
+  // tip, where little breaks again) this cut the zones from 73 to 66 at h = 4 um, f = 0.8
+  // (docs/decisions/0011-zone-placement.md).
   std::vector<double> priority = stretchRatios(bonds_, disc_->cloud, disc_->neighbours, u_);
   const Neighbours& nb = disc_->neighbours;
   const std::size_t first = std::max(factoredBroken_, latestBreaks_), end = brokenByLoading_.size();
@@ -292,12 +294,12 @@ std::vector<double> QuasiStaticFracture::zonePriority() const {
 std::vector<std::size_t> QuasiStaticFracture::hangingPoints() const {
   // Across them only their spring holds them, kSpringRatio of the bond stiffness, which single-precision sparse
   // factors cannot resolve: their refinement then diverges and the zone falls back to double factors
-  // (bench/README.md, "Issue 14, session 18"). In the zone they are solved by the dense LU in double.
+  // (docs/decisions/0011-zone-placement.md). In the zone they are solved by the dense LU in double.
   // The zone takes their neighbours with them, so that the Schur complement's block of such a point is its own
   // entries, without a single-precision product A_pF A_FF^-1 A_Fp to swamp the small eigenvalue (h = 8 um,
   // f = 0.4, seed 87: the points alone left one fall-back to double factors, with their neighbours none).
-  // Outside the core, each costs the zone one horizon, not a core point's two (session 18's priority made 91
-  // zones there, this 83).
+  // Outside the core, each costs the zone one horizon, not a core point's two (putting them first in the core
+  // made 91 zones there, this 83).
   std::vector<std::size_t> points;
   for (std::size_t p = 0; p < stabilized_.size(); ++p)
     if (stabilized_[p] && nearlyFloating(p)) points.push_back(p);

@@ -50,7 +50,8 @@ struct LoadStepReport {
 };
 
 // Precision of the CrackZone driver's sparse factors: single, refined in double. Same crack histories as the
-// reference at h = 8 and 4 um, 21-28% less memory, 11-26% less CPU time (bench/README.md, "Issue 14, session 9").
+// reference at h = 8 and 4 um, 21-28% less memory, 11-26% less CPU time
+// (docs/decisions/0001-own-single-precision-lu.md).
 inline constexpr FactorPrecision kZoneFactorPrecision = FactorPrecision::Single;
 
 // How the solves after a break use the factorization of an older matrix.

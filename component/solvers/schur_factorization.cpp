@@ -239,7 +239,8 @@ class Mumps final : public SchurFactorization::Backend {
 };
 
 // Single precision: the project's own multifrontal LU (solvers/multifrontal_lu.hpp), whose substitutions read
-// the factors at the memory bound; MUMPS' own single-precision solves read them at a third of it (bench/README).
+// the factors at the memory bound; MUMPS' own single-precision solves read them at a third of it
+// (docs/decisions/0001-own-single-precision-lu.md).
 class OwnFrontal final : public SchurFactorization::Backend {
  public:
   void factorize(const CsrMatrix& A, std::span<const double> scale, const std::vector<std::int64_t>& schurUnknowns,

@@ -123,7 +123,7 @@ int runCommand(const RunOptions& options) {
   instanceOptions.resourcePath = fmu.archive.resourcePath();
   instanceOptions.verbose = options.verbose;
   // The bar moves inside a step too: the component reports sub-iterations, broken bonds or internal
-  // time steps of the step in progress (issue 17: one load step of a full-size specimen can take an hour).
+  // time steps of the step in progress (one load step of a full-size specimen can take minutes).
   ProgressBar* liveBar = nullptr;
   std::uint64_t stepsDone = 0;
   std::vector<std::pair<std::string, std::string>> phases;  // of the step in progress, latest count each
