@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   const std::string fmuHelp = "FMU archive (.fmu) or unpacked FMU directory";
 
   unsigned threads = 0;
-  app.add_option("--threads", threads, "threads of the component (OpenMP and OpenBLAS); default: OMP_NUM_THREADS, else all cores")
+  app.add_option("--threads", threads, "OpenMP threads of the component; default: OMP_NUM_THREADS, else all cores")
       ->check(CLI::Range(1u, 4096u));
   app.fallthrough();  // --threads after the subcommand too
 
@@ -79,8 +79,9 @@ int main(int argc, char** argv) {
     return kExitInputError;
   }
 
-  // Before the FMU, and with it libgomp and OpenBLAS, is loaded: both read the count when loaded.
+  // Before the FMU, and with it libgomp, is loaded: it reads the count when loaded.
   if (threads > 0) peristep::setThreadCount(threads);
+  if (sampleCmd->parsed()) peristep::preferSerialBlas();
   // `peristep info FMU`, as before --fmu existed: a name that is an FMU path is the FMU.
   if (info.name.size() > 4 && info.name.ends_with(".fmu")) info.fmu = std::exchange(info.name, "");
 

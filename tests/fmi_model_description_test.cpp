@@ -54,6 +54,11 @@ TEST_CASE("the committed modelDescription.xml is the generated one", "[modelDesc
   CHECK(readFile(PERISTEP_COMMITTED_MODEL_DESCRIPTION) == readFile(PERISTEP_GENERATED_MODEL_DESCRIPTION));
 }
 
+TEST_CASE("the committed docs/variables.md is the generated variable reference", "[modelDescription]") {
+  INFO("regenerate it: cp <build>/variables.md docs/variables.md");
+  CHECK(readFile(PERISTEP_COMMITTED_VARIABLE_REFERENCE) == readFile(PERISTEP_GENERATED_VARIABLE_REFERENCE));
+}
+
 TEST_CASE("modelDescription.xml names its author, copyright, licence, tool and date", "[modelDescription]") {
   const XmlDocument doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
   for (const char* name : {"author", "copyright", "license", "generationTool", "version"}) {

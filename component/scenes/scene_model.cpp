@@ -1,5 +1,6 @@
 #include "scenes/scene_model.hpp"
 
+#include <Eigen/Core>
 #include <cmath>
 #include <optional>
 
@@ -178,6 +179,11 @@ std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
 }  // namespace
 
 SceneModel::SceneModel(const SceneParameters& p) : impl_(std::make_unique<Impl>()) {
+  // Eigen splits its dense products over OpenMP threads, and the split changes their rounding: off, so a
+  // scene gives the same bits on any number of threads (its own loops sum in fixed blocks). The setting
+  // is this library's own (Eigen's state is not exported).
+  static const bool eigenSerial = (Eigen::setNbThreads(1), true);
+  (void)eigenSerial;
   validate(p);
   checkSetUpLimits(p);
   Impl& m = *impl_;
