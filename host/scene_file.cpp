@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "host_errors.hpp"
+#include "name_suggestion.hpp"
 #include "scene_overrides.hpp"
 
 namespace peristep::host {
@@ -26,21 +27,6 @@ std::string_view kindOf(const toml::node& n) {
   }
 }
 
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 // Where a problem is: "file:line: [table] key".
 class Context {
  public:
@@ -55,13 +41,7 @@ class Context {
     throw InputError(where + ": " + problem);
   }
 
-  std::string suggestion(std::string_view name) const {
-    const Variable* best = nullptr;
-    std::size_t bestDistance = 3;  // farther than 2 edits is not a typo
-    for (const Variable& v : md_.variables)
-      if (const std::size_t d = editDistance(name, v.name); d < bestDistance) best = &v, bestDistance = d;
-    return best ? " (did you mean " + best->name + "?)" : "";
-  }
+  std::string suggestion(std::string_view name) const { return didYouMean(name, md_); }
 
   const ModelDescription& md() const { return md_; }
   const std::string& source() const { return source_; }

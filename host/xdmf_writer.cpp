@@ -56,22 +56,39 @@ void attribute(std::ostream& out, const std::string& name, const char* center, c
       << "</Attribute>\n";
 }
 
+// The temporal collection around the grids, and one grid's time, topology and geometry: the same for a
+// run's steps and a study's levels.
+void openCollection(std::ostream& out, const std::string& name) {
+  out << "<?xml version=\"1.0\" ?>\n"
+      << "<Xdmf Version=\"3.0\">\n"
+      << "  <Domain>\n"
+      << "    <Grid Name=\"" << name << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+}
+
+void closeCollection(std::ostream& out) {
+  out << "    </Grid>\n"
+      << "  </Domain>\n"
+      << "</Xdmf>\n";
+}
+
+void openGrid(std::ostream& out, const std::string& name, const std::string& time, const std::string& h5,
+              const std::string& gridDims) {
+  const std::string in = "        ";
+  out << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
+      << in << "<Time Value=\"" << time << "\"/>\n"
+      << in << "<Topology TopologyType=\"2DSMesh\" Dimensions=\"" << gridDims << "\"/>\n"
+      << in << "<Geometry GeometryType=\"XY\">" << hdfItem(h5, xdmfGeometryPath(), gridDims + " 2") << "</Geometry>\n";
+}
+
 }  // namespace
 
 std::string xdmfDocument(const ResultLayout& layout, const std::string& hdf5File, const std::vector<StepScalars>& steps) {
   const std::string h5 = escape(hdf5File) + ":";
   const std::string gridDims = dims({layout.ny, layout.nx});
   std::ostringstream out;
-  out << "<?xml version=\"1.0\" ?>\n"
-      << "<Xdmf Version=\"3.0\">\n"
-      << "  <Domain>\n"
-      << "    <Grid Name=\"PeriStep\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  openCollection(out, "PeriStep");
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const std::string in = "        ";
-    out << "      <Grid Name=\"step " << k + 1 << "\" GridType=\"Uniform\">\n"
-        << in << "<Time Value=\"" << exact(steps[k].time) << "\"/>\n"
-        << in << "<Topology TopologyType=\"2DSMesh\" Dimensions=\"" << gridDims << "\"/>\n"
-        << in << "<Geometry GeometryType=\"XY\">" << hdfItem(h5, xdmfGeometryPath(), gridDims + " 2") << "</Geometry>\n";
+    openGrid(out, "step " + std::to_string(k + 1), exact(steps[k].time), h5, gridDims);
     for (const ArrayInfo& f : layout.fields)
       if (layout.onGrid(f)) attribute(out, f.name, "Node", hdfItem(h5, xdmfFieldPath(k, f.name), gridDims));
     for (const ArrayInfo& a : layout.constantArrays)
@@ -81,9 +98,7 @@ std::string xdmfDocument(const ResultLayout& layout, const std::string& hdf5File
       attribute(out, layout.scalars[i].name, "Grid", xmlItem(steps[k].scalars[i]));
     out << "      </Grid>\n";
   }
-  out << "    </Grid>\n"
-      << "  </Domain>\n"
-      << "</Xdmf>\n";
+  closeCollection(out);
   return out.str();
 }
 
@@ -97,16 +112,10 @@ std::string studyXdmfDocument(const ResultLayout& layout, const std::string& hdf
   const std::string h5 = escape(hdf5File) + ":";
   const std::string gridDims = dims({layout.ny, layout.nx});
   std::ostringstream out;
-  out << "<?xml version=\"1.0\" ?>\n"
-      << "<Xdmf Version=\"3.0\">\n"
-      << "  <Domain>\n"
-      << "    <Grid Name=\"PeriStep study\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  openCollection(out, "PeriStep study");
   for (const StudyXdmfLevel& level : levels) {
-    const std::string in = "        ", group = "/level_" + std::to_string(level.level) + "/";
-    out << "      <Grid Name=\"level " << level.level << "\" GridType=\"Uniform\">\n"
-        << in << "<Time Value=\"" << level.samples << "\"/>\n"
-        << in << "<Topology TopologyType=\"2DSMesh\" Dimensions=\"" << gridDims << "\"/>\n"
-        << in << "<Geometry GeometryType=\"XY\">" << hdfItem(h5, xdmfGeometryPath(), gridDims + " 2") << "</Geometry>\n";
+    const std::string group = "/level_" + std::to_string(level.level) + "/";
+    openGrid(out, "level " + std::to_string(level.level), std::to_string(level.samples), h5, gridDims);
     for (const std::string& statistic : level.statistics)
       for (const ArrayInfo& f : layout.fields)
         if (layout.onGrid(f))
@@ -114,9 +123,7 @@ std::string studyXdmfDocument(const ResultLayout& layout, const std::string& hdf
     for (const auto& [name, value] : level.scalars) attribute(out, name, "Grid", xmlItem(value));
     out << "      </Grid>\n";
   }
-  out << "    </Grid>\n"
-      << "  </Domain>\n"
-      << "</Xdmf>\n";
+  closeCollection(out);
   return out.str();
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// The Float64 variables of the generated modelDescription.xml with their causality and <Dimension>s, and
-// their element counts in a configured instance: for tests that must cover every output or every
-// parameter, not a chosen list.
+// The Float64 variables of the generated modelDescription.xml with their causality and <Dimension>s, their
+// element counts in a configured instance, and the built-in scenes: for tests that must cover every
+// output, every parameter or every scene, not a chosen list.
 #include <string>
 #include <vector>
 
@@ -41,4 +41,21 @@ inline std::size_t elements(Session& s, const Float64Variable& v) {
     n *= static_cast<std::size_t>(size);
   }
   return n;
+}
+
+// The items of PeriStep.Scene: every built-in scene.
+struct SceneItem {
+  std::string name, description;
+  std::int64_t value = 0;
+};
+
+inline std::vector<SceneItem> sceneItems() {
+  const XmlDocument doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
+  std::vector<SceneItem> out;
+  for (xmlNodePtr t : children(firstChild(doc.root(), "TypeDefinitions")))
+    if (attribute(t, "name") == "PeriStep.Scene")
+      for (xmlNodePtr item : children(t, "Item"))
+        out.push_back({attribute(item, "name"), attribute(item, "description"), std::stoll(attribute(item, "value"))});
+  REQUIRE(!out.empty());
+  return out;
 }

@@ -38,17 +38,11 @@ std::vector<std::vector<double>> steps(Session& s, int first, int count, double 
 }  // namespace
 
 TEST_CASE("every scene: a restored FMU state repeats the following steps bit for bit", "[abi][fmustate][scenes]") {
-  const XmlDocument doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
-  xmlNodePtr scenes = nullptr;
-  for (xmlNodePtr t : children(firstChild(doc.root(), "TypeDefinitions")))
-    if (attribute(t, "name") == "PeriStep.Scene") scenes = t;
-  REQUIRE(scenes != nullptr);
   std::size_t tested = 0;
-  for (xmlNodePtr item : children(scenes, "Item")) {
-    const std::string name = attribute(item, "name");
-    INFO(name);
-    const std::int64_t scene = std::stoll(attribute(item, "value"));
-    const double h = coarseStep(scene, attribute(item, "description"));
+  for (const SceneItem& item : sceneItems()) {
+    INFO(item.name);
+    const std::int64_t scene = item.value;
+    const double h = coarseStep(scene, item.description);
     Session s;
     setUpCoarseScene(s, scene);
     REQUIRE(s.initialize(0, 10) == fmi3OK);

@@ -45,18 +45,12 @@ std::vector<double> twoSteps(SetUp setUp, double h, int threads) {
 }  // namespace
 
 TEST_CASE("every scene: one thread and two give the same bits", "[abi][threads][scenes]") {
-  const XmlDocument doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
-  xmlNodePtr scenes = nullptr;
-  for (xmlNodePtr t : children(firstChild(doc.root(), "TypeDefinitions")))
-    if (attribute(t, "name") == "PeriStep.Scene") scenes = t;
-  REQUIRE(scenes != nullptr);
   const int threads = omp_get_max_threads();
   std::size_t tested = 0;
-  for (xmlNodePtr item : children(scenes, "Item")) {
-    const std::string name = attribute(item, "name");
-    INFO(name);
-    const std::int64_t scene = std::stoll(attribute(item, "value"));
-    const double h = coarseStep(scene, attribute(item, "description"));
+  for (const SceneItem& item : sceneItems()) {
+    INFO(item.name);
+    const std::int64_t scene = item.value;
+    const double h = coarseStep(scene, item.description);
     const auto setUp = [&](Session& s) { setUpCoarseScene(s, scene); };
     const std::vector<double> one = twoSteps(setUp, h, 1), two = twoSteps(setUp, h, 2);
     REQUIRE(one.size() == two.size());
