@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "exact_text.hpp"
 #include "gnuplot.hpp"
 #include "host_errors.hpp"
 #include "load_quantity.hpp"
@@ -22,11 +23,6 @@ bool inputVaries(const std::vector<StepScalars>& steps) {
   return false;
 }
 
-std::string exact(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
 
 }  // namespace
 
@@ -36,9 +32,9 @@ void writeHistoryCsv(const std::filesystem::path& file, const ResultLayout& layo
   for (const ArrayInfo& s : layout.scalars) out << ',' << s.name;
   out << '\n';
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    out << k + 1 << ',' << exact(steps[k].time);
-    if (!layout.inputName.empty()) out << ',' << exact(steps[k].input);
-    for (double v : steps[k].scalars) out << ',' << exact(v);
+    out << k + 1 << ',' << exactText(steps[k].time);
+    if (!layout.inputName.empty()) out << ',' << exactText(steps[k].input);
+    for (double v : steps[k].scalars) out << ',' << exactText(v);
     out << '\n';
   }
   writeFileAtomically(file, out.str());
@@ -99,8 +95,8 @@ std::string plotHistory(const std::filesystem::path& png, const ResultLayout& la
     << "set grid\nset format y '%.4g'\nset format x '%.4g'\n"
     << "$steps << EOD\n";
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    s << exact(x.values[k]);
-    for (double v : steps[k].scalars) s << ' ' << exact(v);
+    s << exactText(x.values[k]);
+    for (double v : steps[k].scalars) s << ' ' << exactText(v);
     s << '\n';
   }
   s << "EOD\n"
@@ -117,7 +113,7 @@ std::string plotHistory(const std::filesystem::path& png, const ResultLayout& la
       // A lone curve is named by its axis; several get a key beside the plot, where it hides no data.
       << (panel.size() == 1 ? "unset key\n" : "set key outside right top vertical noenhanced\n") << "plot ";
     for (std::size_t c = 0; c < panel.size(); ++c)
-      s << (c ? ", " : "") << "$steps using 1:($" << panel[c] + 2 << "*" << exact(y.factor) << ") with linespoints pt 7 ps 0.6 title "
+      s << (c ? ", " : "") << "$steps using 1:($" << panel[c] + 2 << "*" << exactText(y.factor) << ") with linespoints pt 7 ps 0.6 title "
         << gnuplotQuoted(layout.scalars[panel[c]].name);
     s << '\n';
   }

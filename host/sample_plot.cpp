@@ -7,6 +7,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "exact_text.hpp"
 #include "gnuplot.hpp"
 #include "unit_scale.hpp"
 
@@ -22,11 +23,6 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
-std::string exact(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
 
 struct ErrorCurve {
   std::size_t column = 0;  // gnuplot counts from 1
@@ -85,14 +81,14 @@ void distributionPanel(std::ostream& s, const ResultDistribution& r, std::size_t
 
   const std::string block = "$result" + std::to_string(index);
   s << block << " << EOD\n";
-  for (std::size_t b = 0; b < bins; ++b) s << exact((*lo + (static_cast<double>(b) + 0.5) * width) * u.factor) << ' ' << count[b] << '\n';
+  for (std::size_t b = 0; b < bins; ++b) s << exactText((*lo + (static_cast<double>(b) + 0.5) * width) * u.factor) << ' ' << count[b] << '\n';
   s << "EOD\n";
   const double top = 1.6 * static_cast<double>(most);  // room for the legend above the bars
-  const auto vertical = [&](double x) { return "'+' using (" + exact(x * u.factor) + "):($0 * " + exact(top) + ") every ::0::1"; };
+  const auto vertical = [&](double x) { return "'+' using (" + exactText(x * u.factor) + "):($0 * " + exactText(top) + ") every ::0::1"; };
   s << "set xlabel " << gnuplotQuoted(axisLabel(r.name, u.unit)) << " noenhanced\n"
-    << "set ylabel 'samples'\nset yrange [0:" << exact(top) << "]\nset format x '%.4g'\nset format y '%g'\n"
+    << "set ylabel 'samples'\nset yrange [0:" << exactText(top) << "]\nset format x '%.4g'\nset format y '%g'\n"
     << "set ytics " << std::max<std::size_t>(1, (most + 7) / 8) << "\n"  // whole samples
-    << "set key top right opaque noenhanced\nset boxwidth " << exact(width * u.factor) << "\nset style fill solid 0.8\n"
+    << "set key top right opaque noenhanced\nset boxwidth " << exactText(width * u.factor) << "\nset style fill solid 0.8\n"
     << "set samples 2\n"
     << "plot " << block << " using 1:2 with boxes lc rgb '#3b528b' title "
     << gnuplotQuoted(std::to_string(q) + " samples, std " + shortNumber(r.std * u.factor)) << ", \\\n  " << vertical(r.mean)

@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "exact_text.hpp"
 #include "gnuplot.hpp"
 #include "unit_scale.hpp"
 
@@ -25,11 +26,6 @@ bool changes(const std::vector<StepScalars>& history, std::size_t i) {
   return false;
 }
 
-std::string exact(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
 
 }  // namespace
 
@@ -70,7 +66,7 @@ std::string writeStressStrainPicture(const std::filesystem::path& png, const Res
     << "set ylabel " << gnuplotQuoted(axisLabel("stress F/A", sigma.unit)) << "\n"
     << "$path << EOD\n";
   for (const StepScalars& step : history)
-    s << exact(step.scalars[strain] * (percent ? 100 : 1)) << ' ' << exact(step.scalars[stress] * sigma.factor) << '\n';
+    s << exactText(step.scalars[strain] * (percent ? 100 : 1)) << ' ' << exactText(step.scalars[stress] * sigma.factor) << '\n';
   s << "EOD\n"
     << "plot $path using 1:2 with linespoints pt 7 ps 0.5 lc rgb '#3b528b' title "
     << gnuplotQuoted("bar end, " + std::to_string(history.size()) + " steps");

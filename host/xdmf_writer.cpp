@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "exact_text.hpp"
 #include "host_errors.hpp"
 
 namespace peristep::host {
@@ -33,11 +34,6 @@ std::string dims(const std::vector<std::uint64_t>& shape) {
   return out;
 }
 
-std::string exact(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", v);
-  return buffer;
-}
 
 // An HDF5 dataset of doubles, `h5` being "<file>:".
 std::string hdfItem(const std::string& h5, const std::string& path, const std::string& dimensions) {
@@ -47,7 +43,7 @@ std::string hdfItem(const std::string& h5, const std::string& path, const std::s
 
 // One value written in the document itself, exactly.
 std::string xmlItem(double value) {
-  return "<DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" + exact(value) +
+  return "<DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" + exactText(value) +
          "</DataItem>";
 }
 
@@ -88,7 +84,7 @@ std::string xdmfDocument(const ResultLayout& layout, const std::string& hdf5File
   std::ostringstream out;
   openCollection(out, "PeriStep");
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    openGrid(out, "step " + std::to_string(k + 1), exact(steps[k].time), h5, gridDims);
+    openGrid(out, "step " + std::to_string(k + 1), exactText(steps[k].time), h5, gridDims);
     for (const ArrayInfo& f : layout.fields)
       if (layout.onGrid(f)) attribute(out, f.name, "Node", hdfItem(h5, xdmfFieldPath(k, f.name), gridDims));
     for (const ArrayInfo& a : layout.constantArrays)

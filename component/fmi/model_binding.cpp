@@ -27,11 +27,15 @@ void copyField(const std::vector<double>& field, std::span<double> out) {
   std::copy(field.begin(), field.end(), out.begin());
 }
 
-// An exact-moment field, or zeros where the scene has none (hasExactMoments tells which).
+// An exact-moment field, or zeros where the scene has none (hasExactMoments tells which). The moments
+// scale with the load: a load that overflows them is refused here, where they are read.
 void exactMoment(M m, int which, std::span<double> out) {
   const std::vector<double> v = m->exactMoment(which);
   if (v.empty()) std::fill(out.begin(), out.end(), 0.0);
   else copyField(v, out);
+  if (!std::all_of(out.begin(), out.end(), [](double x) { return std::isfinite(x); }))
+    throw SolverFailure("the exact moments are not finite at loadFactor = " + numberText(m->loadFactor()) +
+                        ": the load is too large for double precision");
 }
 
 // A held grip's reaction component (0: x, 1: y).
@@ -141,10 +145,14 @@ const std::array<ComputedVariable, 40> kComputed{{
      [](P, M m, std::span<double> out) { out[0] = m->fractureEnergy(); }},
     {PERISTEP_VR_TOUGHNESS_KIC, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->toughnessKIC(); }},
     {PERISTEP_VR_ERROR_L2, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->errorL2(); }},
-    {PERISTEP_VR_EXACT_MEAN_UX, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 0, out); }},
-    {PERISTEP_VR_EXACT_MEAN_UY, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 1, out); }},
-    {PERISTEP_VR_EXACT_STD_UX, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 2, out); }},
-    {PERISTEP_VR_EXACT_STD_UY, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 3, out); }},
+    {PERISTEP_VR_EXACT_MEAN_UX, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 0, out); },
+     nullptr, true},
+    {PERISTEP_VR_EXACT_MEAN_UY, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 1, out); },
+     nullptr, true},
+    {PERISTEP_VR_EXACT_STD_UX, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 2, out); },
+     nullptr, true},
+    {PERISTEP_VR_EXACT_STD_UY, Needs::Solution, [](P, M m, std::span<double> out) { exactMoment(m, 3, out); },
+     nullptr, true},
     {PERISTEP_VR_HAS_EXACT_MOMENTS, Needs::Model, nullptr,
      [](P, M m, std::span<std::int32_t> out) { out[0] = m->hasExactMoments() ? 1 : 0; }},
     {PERISTEP_VR_RETAINED_VARIANCE, Needs::Model,
@@ -229,7 +237,7 @@ SceneParameters sceneParameters(const ParameterValues& v) {
 std::string firstNonFinite(const ParameterValues& values, const SceneModel& model, Needs needs) {
   std::vector<double> buffer;
   for (const ComputedVariable& c : kComputed) {
-    if (c.needs != needs || !c.readFloat64) continue;
+    if (c.needs != needs || !c.readFloat64 || c.onRequest) continue;
     const Variable& v = *findVariable(c.vr);
     buffer.resize(values.size(v));
     c.readFloat64(values, &model, buffer);

@@ -23,12 +23,14 @@ struct ComputedVariable {
   // Parameters).
   void (*readFloat64)(const ParameterValues&, const SceneModel*, std::span<double>) = nullptr;
   void (*readInt32)(const ParameterValues&, const SceneModel*, std::span<std::int32_t>) = nullptr;
+  // Costly, computed on the first read (the exact moments): checked when read, not after every step.
+  bool onRequest = false;
 };
 
 // nullptr for a variable that is not computed (parameters, inputs, the independent variable).
 const ComputedVariable* findComputed(fmi3ValueReference vr);
 
-// The first Float64 variable of `needs` (Model or Solution) whose value is not finite, as "name = inf" or
+// The first Float64 variable of `needs` (Model or Solution, not onRequest) whose value is not finite, as "name = inf" or
 // "name[k] = nan"; empty when all are finite.
 std::string firstNonFinite(const ParameterValues& values, const SceneModel& model, Needs needs);
 
