@@ -48,9 +48,10 @@ int main(int argc, char** argv) {
   convCmd->add_flag("-v,--verbose", convergence.verbose, "echo every message the component logs");
 
   CLI::App* sampleCmd =
-      app.add_subcommand("sample", "statistics over the random coordinates: tensor or Smolyak collocation, Monte Carlo");
+      app.add_subcommand("sample", "statistics over the random coordinates: tensor or Smolyak collocation, Monte Carlo, "
+                        "multilevel Monte Carlo over grids");
   sampleCmd->add_option("scene", sample.scene, "scene file (TOML)")->required();
-  sampleCmd->add_option("--rule", sample.rule, "tensor, smolyak or mc")->required();
+  sampleCmd->add_option("--rule", sample.rule, "tensor, smolyak, mc or mlmc")->required();
   sampleCmd->add_option("--level,--levels", sample.levels,
                         "tensor: points per coordinate; smolyak: level (0 = one point); a list runs a study")
       ->delimiter(',');
@@ -64,6 +65,18 @@ int main(int argc, char** argv) {
   sampleCmd->add_option("--shard", sample.shard,
                         "K/N: run only samples K, K+N, K+2N, ... (1 <= K <= N) of every level and store them; "
                         "no statistics (for batch arrays without MPI)");
+  sampleCmd->add_option("--grids", sample.grids,
+                        "mlmc: number of grids; the scene's is the finest, each coarser halves nx - 1 and ny - 1")
+      ->capture_default_str();
+  sampleCmd->add_option("--quantity", sample.quantity,
+                        "mlmc: the scalar output estimated (default: the scene's first [output] result, else toughnessKIC)");
+  sampleCmd->add_option("--se", sample.se, "mlmc: target standard error relative to the estimate")->capture_default_str();
+  sampleCmd->add_option("--se-absolute", sample.seAbsolute, "mlmc: target standard error in the quantity's unit");
+  sampleCmd->add_option("--pilot", sample.pilot, "mlmc: samples per level before the counts are chosen")
+      ->capture_default_str();
+  sampleCmd->add_option("--level-costs", sample.levelCosts,
+                        "mlmc: cost per sample of each level for the allocation (default: the measured wall times)")
+      ->delimiter(',');
   sampleCmd->add_flag("--merge", sample.merge,
                       "run no sample: statistics and result files from the stored samples (after --shard runs)")
       ->excludes("--shard");

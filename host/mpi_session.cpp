@@ -38,6 +38,14 @@ std::uint64_t MpiSession::sumToRoot(std::uint64_t value) const {
   return sum;
 }
 
+void MpiSession::broadcast(std::vector<std::uint64_t>& values) const {
+  if (size_ == 1) return;
+  std::uint64_t count = values.size();
+  MPI_Bcast(&count, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  values.resize(count);
+  MPI_Bcast(values.data(), static_cast<int>(count), MPI_UINT64_T, 0, MPI_COMM_WORLD);
+}
+
 void MpiSession::abort(const std::string& message, int exitCode) const {
   std::cerr << "peristep (rank " << rank_ << " of " << size_ << "): " << message << std::endl;
   MPI_Abort(MPI_COMM_WORLD, exitCode);

@@ -3,6 +3,7 @@
 // srun): without one the program neither initializes MPI nor needs a launcher, and runs as one rank.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace peristep::host {
 
@@ -22,6 +23,8 @@ class MpiSession {
   int size() const { return size_; }
   // Sum over the ranks, valid on rank 0.
   std::uint64_t sumToRoot(std::uint64_t value) const;
+  // Rank 0's values on every rank (the other ranks' vectors are resized to match).
+  void broadcast(std::vector<std::uint64_t>& values) const;
   // Prints the message with this rank's number and ends every rank (the others would wait forever).
   [[noreturn]] void abort(const std::string& message, int exitCode) const;
 

@@ -288,11 +288,12 @@ TEST_CASE("a checkpoint taken between sub-iterations continues the load step bit
 
 TEST_CASE("a checkpoint taken while the crack zone holds points hanging by their springs continues bit for bit",
           "[fracture][checkpoint]") {
-  // h = 8 um, f = 0.2, seed 4: the first zone with such points comes at U_D = 0.24 um (none at h = 16 um).
+  // h = 8 um, f = 0.2, seed 6: the first zone with such points comes at U_D = 0.264 um (none at h = 16 um,
+  // none before U_D = 0.4 um for seeds 1-5).
   GlassCeramicSpec spec = coarseSpecimen(0.2);
   spec.grid.nx = 101;
   spec.grid.ny = 51;
-  spec.seed = 4;
+  spec.seed = 6;
   GlassCeramicSpecimen g(spec);
   int step = 0;
   while (step < 100 && g.solver().zoneHangingPoints() == 0) g.advance(++step * 4e-9);

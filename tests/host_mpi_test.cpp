@@ -14,18 +14,6 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-// scenes/composite_sampling.toml (Test 2, two normal coordinates) or smooth_sampling.toml on a small grid.
-std::string smallScene(const std::string& name, int n) {
-  std::istringstream in(readText(fs::path(PERISTEP_SOURCE_DIR) / "scenes" / name));
-  std::string out;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("nx =", 0) == 0) line = "nx = " + std::to_string(n);
-    if (line.rfind("ny =", 0) == 0) line = "ny = " + std::to_string(n);
-    out += line + '\n';
-  }
-  return out;
-}
-
 std::vector<std::string> sampleArgs(const std::vector<std::string>& args) {
   std::vector<std::string> all{PERISTEP_HOST_BINARY, "sample"};
   all.insert(all.end(), args.begin(), args.end());
@@ -46,6 +34,19 @@ ProcessResult mpirun(const fs::path& dir, const std::vector<std::string>& args, 
   const ProcessResult r = runProcess(all, dir);
   unsetenv("PERISTEP_SAMPLE_EXIT_AFTER");
   return r;
+}
+
+// The same study serially on two threads in `serial` and under mpirun -n 2 in `parallel`; both must succeed.
+void serialAndMpirun(const fs::path& serial, const fs::path& parallel, const std::vector<std::string>& args) {
+  std::vector<std::string> twoThreads = args;
+  twoThreads.insert(twoThreads.end(), {"--threads", "2"});
+  const ProcessResult one = runProcess(sampleArgs(twoThreads), serial);
+  INFO("serial:\n" << one.out << one.err);
+  REQUIRE(one.exitCode == 0);
+  const ProcessResult two = mpirun(parallel, args);
+  INFO("mpirun:\n" << two.out << two.err);
+  REQUIRE(two.exitCode == 0);
+  CHECK_THAT(two.out, Contains("2 MPI ranks"));
 }
 
 // The CSV with the named columns blanked (wall time differs between runs).
@@ -103,17 +104,8 @@ TEST_CASE("mpi: mpirun -n 2 gives the serial run's CSV (apart from wall time) an
           "[host][sample][mpi]") {
   const ScopedEnv oneThreadPerRank("OMP_NUM_THREADS", "1");  // the serial run overrides it
   TempDir serial, parallel;
-  for (const TempDir* d : {&serial, &parallel}) writeText(*d / "t2.toml", smallScene("composite_sampling.toml", 33));
-  const std::vector<std::string> args{"t2.toml", "--rule", "smolyak", "--levels", "1,2", "--out", "s.h5"};
-  std::vector<std::string> twoThreads = args;
-  twoThreads.insert(twoThreads.end(), {"--threads", "2"});
-  const ProcessResult one = runProcess(sampleArgs(twoThreads), serial.path());
-  INFO("serial:\n" << one.out << one.err);
-  REQUIRE(one.exitCode == 0);
-  const ProcessResult two = mpirun(parallel.path(), args);
-  INFO("mpirun:\n" << two.out << two.err);
-  REQUIRE(two.exitCode == 0);
-  CHECK_THAT(two.out, Contains("2 MPI ranks"));
+  for (const TempDir* d : {&serial, &parallel}) writeText(*d / "t2.toml", sceneOnGrid("composite_sampling.toml", 33));
+  serialAndMpirun(serial.path(), parallel.path(), {"t2.toml", "--rule", "smolyak", "--levels", "1,2", "--out", "s.h5"});
   CHECK(storeFiles(parallel / "s.samples").size() == 17);  // 5 + 17 points, the 5 shared
   CHECK(csvWithout(parallel / "s.csv", {"seconds"}) == csvWithout(serial / "s.csv", {"seconds"}));
   checkSameStatistics(serial / "s.h5", parallel / "s.h5", kStatistics);
@@ -122,7 +114,7 @@ TEST_CASE("mpi: mpirun -n 2 gives the serial run's CSV (apart from wall time) an
 TEST_CASE("mpi: a study killed part-way under mpirun and restarted recomputes no finished sample",
           "[host][sample][mpi]") {
   TempDir dir;
-  writeText(dir / "t1.toml", smallScene("smooth_sampling.toml", 17));
+  writeText(dir / "t1.toml", sceneOnGrid("smooth_sampling.toml", 17));
   const std::vector<std::string> args{"t1.toml", "--rule", "tensor", "--level", "12", "--out", "study.h5"};
   const ScopedEnv tmp("TMPDIR", privateTmp(dir).string());
   const ProcessResult killed = mpirun(dir.path(), args, 2);  // each rank ends after its 2nd sample
@@ -155,7 +147,7 @@ TEST_CASE("mpi: a study killed part-way under mpirun and restarted recomputes no
 TEST_CASE("mpi-free shards: --shard 1/2 and 2/2 then --merge give the serial statistics and --merge names what is missing",
           "[host][sample][mpi][shard]") {
   TempDir serial, shards;
-  for (const TempDir* d : {&serial, &shards}) writeText(*d / "t2.toml", smallScene("composite_sampling.toml", 9));
+  for (const TempDir* d : {&serial, &shards}) writeText(*d / "t2.toml", sceneOnGrid("composite_sampling.toml", 9));
   const std::vector<std::string> args{"t2.toml", "--rule", "smolyak", "--level", "2", "--out", "s.h5"};
   const auto with = [&](std::vector<std::string> extra) {
     std::vector<std::string> all = args;
@@ -184,4 +176,17 @@ TEST_CASE("mpi-free shards: --shard 1/2 and 2/2 then --merge give the serial sta
 
   CHECK(with({"--shard", "3/2"}).exitCode == 2);
   CHECK(with({"--shard", "1/2", "--merge"}).exitCode == 2);
+}
+
+// Multilevel Monte Carlo chooses its sample counts from variances and costs; with the costs given
+// (--level-costs) the choice is the same in every run, and so is every number.
+TEST_CASE("mpi: mpirun -n 2 gives the serial multilevel estimate bit for bit", "[host][sample][mpi][mlmc]") {
+  const ScopedEnv oneThreadPerRank("OMP_NUM_THREADS", "1");
+  TempDir serial, parallel;
+  for (const TempDir* d : {&serial, &parallel}) writeText(*d / "t3.toml", sceneOnGrid("interface_crack_sampling.toml", 17));
+  serialAndMpirun(serial.path(), parallel.path(), {"t3.toml", "--rule", "mlmc", "--grids", "2", "--quantity", "reactionTopY",
+                                                   "--se", "0.01", "--level-costs", "1,4", "--out", "ml.h5"});
+  CHECK(csvWithout(parallel / "ml.csv", {"fine_s", "coarse_s"}) == csvWithout(serial / "ml.csv", {"fine_s", "coarse_s"}));
+  CHECK(csvWithout(parallel / "ml_summary.csv", {"sample_seconds", "threads_per_sample", "plain_mc_seconds"}) ==
+        csvWithout(serial / "ml_summary.csv", {"sample_seconds", "threads_per_sample", "plain_mc_seconds"}));
 }

@@ -70,6 +70,18 @@ inline std::string readText(const fs::path& file) {
 
 inline void writeText(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
+// scenes/<name> with its nx and ny lines set to n (a small grid for a quick study).
+inline std::string sceneOnGrid(const std::string& name, int n) {
+  std::istringstream in(readText(fs::path(PERISTEP_SOURCE_DIR) / "scenes" / name));
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("nx =", 0) == 0) line = "nx = " + std::to_string(n);
+    if (line.rfind("ny =", 0) == 0) line = "ny = " + std::to_string(n);
+    out += line + '\n';
+  }
+  return out;
+}
+
 struct ProcessResult {
   int exitCode = -1;
   std::string out, err;

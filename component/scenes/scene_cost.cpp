@@ -18,7 +18,7 @@ constexpr double kBytesPerFactorEntry = 40;   // UMFPACK working memory per esti
 constexpr double kBytesPerBond = 40;          // neighbour index, weight, bond state
 constexpr double kBytesPerMatrixEntry = 48;   // assembly pieces and the CSR copies of A and B
 constexpr double kFlopsPerBond = 200;         // neighbour search, weights, assembly per bond
-constexpr double kFlopsPerCrystalCheck = 25;  // one grid point tested against one ellipse
+constexpr double kFlopsPerCrystalCheck = 25;  // one point or cell tested against one ellipse
 
 // Points of the grid with its collar (geometry/point_cloud.hpp).
 double collaredPoints(const GridSpec& g) {
@@ -58,15 +58,16 @@ Part lpsSetUp(const GridSpec& g) {
 }
 
 // Crystals placed until the fraction f is reached (000 Sec. 5): a Boolean model covers 1 - exp(-N a/A)
-// of the plate with N ellipses of area a, so N = -ln(1 - f) A / a; each ellipse tests the grid points
-// within its semi-major axis.
+// of the plate with N ellipses of area a, so N = -ln(1 - f) A / a; each ellipse tests the placement
+// raster's cells and then the grid points within its semi-major axis.
 Part microstructure(const SceneParameters& p, double realizations) {
   const EllipseShape e;
   const double f = std::min(p.crystalFraction, 0.999);
-  const double h = p.grid.h(), reach = std::ceil(e.semiMajor / h) + 1;
+  const double cell = e.semiMinor / kCoverRasterPerMinorAxis;
+  const double checks = std::pow(2 * e.semiMajor / cell + 1, 2) + std::pow(2 * e.semiMajor / p.grid.h() + 3, 2);
   const double crystals = -std::log1p(-f) * p.grid.Lx * p.grid.Ly / (std::numbers::pi * e.semiMajor * e.semiMinor);
   Part m;
-  m.flops = realizations * crystals * (2 * reach + 1) * (2 * reach + 1) * kFlopsPerCrystalCheck;
+  m.flops = realizations * crystals * checks * kFlopsPerCrystalCheck;
   m.what = "placing about " + numberText(crystals, 2) + " crystals of 12 x 7.5 um on the " + numberText(p.grid.Lx, 2) +
            " x " + numberText(p.grid.Ly, 2) + " m plate" +
            (realizations > 1 ? " in each of " + numberText(realizations, 2) + " realizations" : "");

@@ -32,7 +32,7 @@ struct SampleOptions {
   std::string scene;
   std::string fmu;
   std::string out;                     // HDF5 study file; CSV and sample directory beside it
-  std::string rule;                    // tensor | smolyak | mc
+  std::string rule;                    // tensor | smolyak | mc | mlmc
   std::vector<std::uint64_t> levels;   // tensor: points per coordinate; smolyak: level
   std::vector<std::uint64_t> samples;  // mc: sample counts
   bool nested = false;
@@ -41,6 +41,12 @@ struct SampleOptions {
   bool verbose = false;
   std::string shard;                   // "K/N": run only the K-th of N parts, write only samples
   bool merge = false;                  // no sample run: statistics and files from the stored samples
+  // mlmc (multilevel_study.hpp)
+  std::size_t grids = 3;
+  std::string quantity;                // default: the scene's first [output] result, else toughnessKIC
+  double se = 0.02, seAbsolute = 0;
+  std::size_t pilot = 10;
+  std::vector<double> levelCosts;
 };
 
 int infoCommand(const InfoOptions& options);

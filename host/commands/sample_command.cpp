@@ -15,6 +15,7 @@
 #include "../host_errors.hpp"
 #include "../mpi_session.hpp"
 #include "../mpi_work_queue.hpp"
+#include "../multilevel_study.hpp"
 #include "../output_lock.hpp"
 #include "../progress.hpp"
 #include "../sample_plot.hpp"
@@ -31,7 +32,7 @@ SampleRule parseRule(const std::string& name) {
   if (name == "tensor") return SampleRule::Tensor;
   if (name == "smolyak") return SampleRule::Smolyak;
   if (name == "mc") return SampleRule::MonteCarlo;
-  throw InputError("--rule: unknown rule '" + name + "' (tensor, smolyak or mc)");
+  throw InputError("--rule: unknown rule '" + name + "' (tensor, smolyak, mc or mlmc)");
 }
 
 std::string lawText(const RandomSpace& space) {
@@ -171,7 +172,72 @@ std::vector<ResultDistribution> resultDistributions(const Scene& scene, const Re
   return out;
 }
 
+// What every rule opens before its first sample: the FMU and its library, the scene, the output's lock
+// (taken by the process that writes the results, before the sample store is opened), the store beside
+// the output, and the random space the component declares.
+struct StudySetup {
+  StudySetup(const SampleOptions& options, bool writes)
+      : fmu(options.fmu),
+        scene(loadScene(options.scene, fmu.md, options.set)),
+        out(options.out.empty() ? std::filesystem::path(std::filesystem::path(options.scene).filename().replace_extension("").string() +
+                                                        "_" + options.rule + ".h5")
+                                : std::filesystem::path(options.out)),
+        lock(writes ? std::optional<OutputLock>(std::in_place, out) : std::nullopt),
+        store(std::filesystem::path(out).replace_extension(".samples")),
+        binary(fmu.archive.binaryFile(fmu.md.coSimulationIdentifier)),
+        library(binary) {
+    instance.resourcePath = fmu.archive.resourcePath();
+    instance.verbose = options.verbose;
+    space = readRandomSpace(library, fmu.md, scene, instance);
+  }
+
+  const OpenedFmu fmu;
+  const Scene scene;
+  const std::filesystem::path out;
+  const std::optional<OutputLock> lock;
+  const SampleStore store;
+  const std::filesystem::path binary;
+  const FmuLibrary library;
+  FmuInstance::Options instance;
+  RandomSpace space;
+};
+
+// --rule mlmc: multilevel Monte Carlo of one scalar output over grids (multilevel_study.hpp).
+int runMultilevelStudy(const SampleOptions& options, const MpiSession& mpi) {
+  if (!options.shard.empty() || options.merge || !options.levels.empty() || !options.samples.empty() || options.nested)
+    throw InputError("--rule mlmc chooses its own sample counts: it takes --grids, --quantity, --se, --se-absolute, "
+                     "--pilot, --level-costs and --seed");
+  const StudySetup setup(options, mpi.rank() == 0);
+  MultilevelOptions ml;
+  ml.grids = options.grids;
+  ml.quantity = options.quantity;
+  if (ml.quantity.empty()) ml.quantity = setup.scene.results.empty() ? "toughnessKIC" : setup.scene.results.front();
+  ml.relativeSe = options.se;
+  ml.absoluteSe = options.seAbsolute;
+  ml.pilot = options.pilot;
+  ml.seed = options.seed;
+  ml.costs = options.levelCosts;
+  if (mpi.rank() == 0)
+    std::cout << "# " << options.scene << ": random coordinates " << lawText(setup.space) << "; rule mlmc over "
+              << ml.grids << " grids of " << ml.quantity
+              << (mpi.size() > 1 ? "; " + std::to_string(mpi.size()) + " MPI ranks" : "") << '\n';
+  const MultilevelResult result = runMultilevel(setup.library, setup.fmu.md, setup.scene, setup.instance, setup.store,
+                                                SampleStore::fileDigest(setup.binary), setup.space, ml, mpi);
+  if (mpi.rank() != 0) return 0;
+  const std::filesystem::path csv = std::filesystem::path(setup.out).replace_extension(".csv");
+  const std::filesystem::path summary =
+      std::filesystem::path(setup.out).replace_extension("").string() + "_summary.csv";
+  writeMultilevelCsv(csv, summary, result);
+  printMultilevel(std::cout, result);
+  std::cout << "wrote " << csv.string() << " and " << summary.string() << " (samples kept in "
+            << setup.store.directory().string() << ")\n";
+  std::size_t failed = 0;
+  for (const MultilevelLevel& l : result.levels) failed += l.failures.size();
+  return failed > 0 ? kExitRunError : 0;
+}
+
 int runStudy(const SampleOptions& options, const MpiSession& mpi) {
+  if (options.rule == "mlmc") return runMultilevelStudy(options, mpi);
   SamplingOptions rule;
   rule.rule = parseRule(options.rule);
   rule.nested = options.nested;
@@ -190,31 +256,20 @@ int runStudy(const SampleOptions& options, const MpiSession& mpi) {
     throw InputError("--shard and --merge are for runs without MPI; under mpirun the ranks share the samples");
   const bool root = mpi.rank() == 0, writes = root && !sharded;
 
-  const OpenedFmu fmu(options.fmu);
-  const Scene scene = loadScene(options.scene, fmu.md, options.set);
-  std::filesystem::path out = options.out;
-  if (out.empty())
-    out = std::filesystem::path(options.scene).filename().replace_extension("").string() + "_" + options.rule + ".h5";
+  const StudySetup setup(options, writes);
+  const OpenedFmu& fmu = setup.fmu;
+  const Scene& scene = setup.scene;
+  const std::filesystem::path& out = setup.out;
   const std::filesystem::path csv = std::filesystem::path(out).replace_extension(".csv");
-  // The process that writes the statistics holds the output's name for the whole study; shards and
-  // MPI ranks share the sample store, which takes whole files only.
-  std::optional<OutputLock> lock;
-  if (writes) lock.emplace(out);
-  const SampleStore store(std::filesystem::path(out).replace_extension(".samples"));
-
-  const std::filesystem::path binary = fmu.archive.binaryFile(fmu.md.coSimulationIdentifier);
-  const FmuLibrary library(binary);
-  FmuInstance::Options instanceOptions;
-  instanceOptions.resourcePath = fmu.archive.resourcePath();
-  instanceOptions.verbose = options.verbose;
-  const RandomSpace space = readRandomSpace(library, fmu.md, scene, instanceOptions);
+  const SampleStore& store = setup.store;
+  const RandomSpace& space = setup.space;
   if (root)
     std::cout << "# " << options.scene << ": random coordinates " << lawText(space) << "; rule " << options.rule
               << (rule.rule == SampleRule::Smolyak ? (options.nested ? " (nested)" : " (Gauss)") : "")
               << (mpi.size() > 1 ? "; " + std::to_string(mpi.size()) + " MPI ranks" : "")
               << (sharded ? "; shard " + options.shard : "") << (options.merge ? "; merging stored samples" : "") << '\n';
 
-  SampleStudy study(library, fmu.md, scene, instanceOptions, store, SampleStore::fileDigest(binary));
+  SampleStudy study(setup.library, fmu.md, scene, setup.instance, store, SampleStore::fileDigest(setup.binary));
   StudyDescription description{options.scene, options.rule,
                                {{"nested", std::vector<std::int64_t>{options.nested}},
                                 {"seed", std::vector<std::uint64_t>{options.seed}},
