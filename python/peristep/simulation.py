@@ -55,7 +55,7 @@ class Simulation:
         scene_name = parameters.get("scene")
         if scene_name is None and "scene" in md.variables and md.variables["scene"].start is not None:
             scene_name = md.item_name(md.variables["scene"], int(md.variables["scene"].start))
-        self.scene = md.scenes().get(scene_name)
+        self.scene_info = md.scenes().get(scene_name)  # the Scene record; sim.scene is the variable
         ex = md.default_experiment
         self._start = ex.get("startTime", 0.0)
         self.time = self._start
@@ -116,8 +116,8 @@ class Simulation:
     @property
     def default_step(self):
         """The scene's recommended communication step, else the DefaultExperiment's."""
-        if self.scene is not None and self.scene.step is not None:
-            return self.scene.step
+        if self.scene_info is not None and self.scene_info.step is not None:
+            return self.scene_info.step
         return self._md.default_experiment.get("stepSize", 1.0)
 
     @property
@@ -158,14 +158,14 @@ class Simulation:
         if load is not None:
             if input is None:
                 inputs = [v.name for v in md.variables.values() if v.causality == "input"]
-                input = self.scene.input if self.scene is not None and self.scene.input else inputs[0]
+                input = self.scene_info.input if self.scene_info is not None and self.scene_info.input else inputs[0]
             v = md.variable(input)
             if v.causality != "input":
                 raise PeriStepError(f"{input} is a {v.causality}, not an input")
             start, end = (float(x) for x in load)
         dt = self.default_step if dt is None else float(dt)
         if steps is None:
-            stop = self.scene.stop_time if self.scene is not None and self.scene.stop_time else None
+            stop = self.scene_info.stop_time if self.scene_info is not None and self.scene_info.stop_time else None
             stop = stop or md.default_experiment.get("stopTime", self._start + dt)
             steps = max(1, round((stop - self._start) / dt))
         if fields and as_frame:
