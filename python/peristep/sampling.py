@@ -80,7 +80,8 @@ def sample(scene_or_parameters, rule="smolyak", level=None, samples=None, seed=1
 
 
 def _random_space(model, params):
-    """(entries of xi that are random, their laws), asked of the component as the host does."""
+    """(entries of xi that are random, their laws, the length of xi), asked of the component as the host
+    does: in Initialization Mode, before the scene is built."""
     with Simulation(fmu=model.fmu, **params) as probe:
         codes = np.atleast_1d(probe._calculated_parameter("xiDistribution"))
     laws = model.description.xi_laws()
@@ -107,32 +108,38 @@ def _study_level(model, params, run, rule, n, seed, space, processes):
     seeds = np.arange(seed, seed + len(weights)) if not laws else None
     jobs = []
     for k in range(len(weights)):
-        job = dict(params)
         xi = np.zeros(modes)
         xi[index] = points[k]
-        job["xi"] = xi
-        if seeds is not None:
-            job["seed"] = int(seeds[k])
-        jobs.append(job)
+        jobs.append(dict(params, xi=xi, **({} if seeds is None else {"seed": int(seeds[k])})))
     records = _run_jobs(model.fmu, jobs, run, processes)
     result = SampleResult(rule, n, points, weights, seeds, {}, [], 0.0)
-    failed = [k for k, r in enumerate(records) if isinstance(r, str)]
-    result.failures = [f"sample {k + 1} of {len(jobs)} (xi = {list(jobs[k]['xi'])}"
-                       f"{'' if seeds is None else ', seed ' + str(seeds[k])}): {records[k]}" for k in failed]
+    result.failures = [f"sample {k + 1} of {len(jobs)} (xi = [{', '.join(f'{x + 0.0:.6g}' for x in jobs[k]['xi'])}]"
+                       f"{'' if seeds is None else ', seed ' + str(seeds[k])}): {r}"
+                       for k, r in enumerate(records) if isinstance(r, str)]
+    if len(result.failures) < len(records):
+        _statistics_of(result, records, projection)
+    result.seconds = time.monotonic() - started
+    return result
+
+
+def _statistics_of(result, records, projection):
+    """Fills the samples and, as the host does, the moments: Monte Carlo over the successful samples with
+    equal weights, tensor and Smolyak rules only when no sample failed (NaN otherwise)."""
     good = [r for r in records if not isinstance(r, str)]
-    if not good:
-        result.seconds = time.monotonic() - started
-        return result
-    names = list(good[0]["outputs"])
-    for name in names:
-        nan = np.full_like(good[0]["outputs"][name], np.nan, dtype=float)
+    first = good[0]
+    for name, value in first["outputs"].items():
+        nan = np.full_like(value, np.nan, dtype=float)
         result.samples[name] = np.array([nan if isinstance(r, str) else r["outputs"][name] for r in records])
-    monte_carlo = rule == "mc"
-    if monte_carlo or not failed:
-        used = [k for k in range(len(records)) if k not in failed]
-        w = weights if not failed else np.full(len(used), 1.0 / len(used))
-        for name in names:
-            values = [result.samples[name][k] for k in used]
+    result.h = first["h"]
+    monte_carlo = result.rule == "mc"
+    if result.failures and not monte_carlo:
+        for stat in ("mean", "std") + (("pce_std",) if projection is not None else ()):
+            getattr(result, stat).update((name, np.nan * v[0]) for name, v in result.samples.items())
+    else:
+        used = [k for k, r in enumerate(records) if not isinstance(r, str)]
+        w = np.full(len(used), 1.0 / len(used)) if result.failures else result.weights
+        for name, samples in result.samples.items():
+            values = [samples[k] for k in used]
             result.mean[name], result.std[name], clamped = _statistics.weighted_moments(values, w)
             result.clamped += clamped
             if monte_carlo:
@@ -140,24 +147,16 @@ def _study_level(model, params, run, rule, n, seed, space, processes):
                     _statistics.standard_errors(values, result.mean[name], result.std[name])
             if projection is not None:
                 result.pce_std[name] = _statistics.pce_std(values, projection)
-        first = good[0]
-        if first["exact"]:
-            h = first["h"]
-            moments = (result.mean, result.std)
-            exact = [(first["outputs"]["exactMeanUx"], first["outputs"]["exactMeanUy"]),
-                     (first["outputs"]["exactStdUx"], first["outputs"]["exactStdUy"])]
-            result.error_mean, result.error_std = (
-                _statistics.l2_distance(m["ux"], m["uy"], ex, ey, h) for m, (ex, ey) in zip(moments, exact))
-        result.h = first["h"]
-    else:
-        for stat in ("mean", "std") + (("pce_std",) if projection is not None else ()):
-            getattr(result, stat).update((name, np.nan * result.samples[name][0]) for name in names)
+        if first["exact"]:  # the exact moments do not depend on the sample: the first one's serve
+            out = first["outputs"]
+            result.error_mean = _statistics.l2_distance(result.mean["ux"], result.mean["uy"], out["exactMeanUx"],
+                                                        out["exactMeanUy"], result.h)
+            result.error_std = _statistics.l2_distance(result.std["ux"], result.std["uy"], out["exactStdUx"],
+                                                       out["exactStdUy"], result.h)
     for stat in ("mean", "std", "pce_std", "se_mean", "se_std", "se_variance"):
         table = getattr(result, stat)
         for name, value in table.items():
             table[name] = float(value) if np.ndim(value) == 0 else value
-    result.seconds = time.monotonic() - started
-    return result
 
 
 def _compare_with_last(results):

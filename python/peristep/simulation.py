@@ -35,18 +35,17 @@ class Simulation:
             if v.causality not in _SETTABLE:
                 raise PeriStepError(f"{name} is a {v.causality} and cannot be set")
             settings.append((v, value))
-        self._structural = structural = self._structural_values(settings)
+        self._structural, configured = self._structural_values(settings)
+        structural = self._structural
         flat = [(v, _values.to_flat(md, v, value, [structural[d] if isinstance(d, str) else d for d in v.dimensions]))
                 for v, value in settings]
 
         self._instance = Instance(model.library, md.instantiation_token, "peristep.Simulation", model.resource_path)
         self._states = weakref.WeakSet()
-        given = [(md.variables[n], np.array([structural[n]], dtype=np.uint64)) for n in structural
-                 if n in parameters or n in self._inferred]
-        if given:
+        if configured:
             self._instance.enter_configuration_mode()
-            for v, values in given:
-                self._instance.set(v, values)
+            for name in configured:
+                self._instance.set(md.variables[name], np.array([structural[name]], dtype=np.uint64))
             self._instance.exit_configuration_mode()
         for v, values in flat:
             if v.causality != "structuralParameter":
@@ -63,23 +62,23 @@ class Simulation:
         self._finished = False
 
     def _structural_values(self, settings):
-        """Every structural parameter's value: given, implied by an array's shape, or its start value."""
-        md = self._md
-        values = {v.name: int(v.start) for v in md.variables.values()
+        """Every structural parameter's value (given, implied by an array's shape, or its start value),
+        and the names of those given or implied, which Configuration Mode sets."""
+        values = {v.name: int(v.start) for v in self._md.variables.values()
                   if v.causality == "structuralParameter" and v.start is not None}
-        given = {v.name for v, _ in settings if v.causality == "structuralParameter"}
-        self._inferred = set()
+        configured = []
         for v, value in settings:
             if v.causality == "structuralParameter":
                 values[v.name] = int(np.asarray(value))
+                configured.append(v.name)
         for v, value in settings:
             shape = np.shape(value)
             if v.is_array and len(shape) == len(v.dimensions):
                 for d, n in zip(v.dimensions, shape):
-                    if isinstance(d, str) and d not in given and d not in self._inferred:
+                    if isinstance(d, str) and d not in configured:
                         values[d] = n
-                        self._inferred.add(d)
-        return values
+                        configured.append(d)
+        return values, configured
 
     # --- life cycle ---------------------------------------------------------------------------------
 
@@ -159,9 +158,9 @@ class Simulation:
             if input is None:
                 inputs = [v.name for v in md.variables.values() if v.causality == "input"]
                 input = self.scene_info.input if self.scene_info is not None and self.scene_info.input else inputs[0]
-            v = md.variable(input)
-            if v.causality != "input":
-                raise PeriStepError(f"{input} is a {v.causality}, not an input")
+            ramped = md.variable(input)
+            if ramped.causality != "input":
+                raise PeriStepError(f"{input} is a {ramped.causality}, not an input")
             start, end = (float(x) for x in load)
         dt = self.default_step if dt is None else float(dt)
         if steps is None:
@@ -171,7 +170,7 @@ class Simulation:
         if fields and as_frame:
             raise PeriStepError("as_frame holds the scalar outputs only; ask for fields separately")
         if load is not None and not self._initialized:
-            self._instance.set(v, np.array([start]))  # initialized at the start of the ramp, as the host does
+            self._instance.set(ramped, np.array([start]))  # initialized at the start of the ramp, as the host does
         self._initialize()
         scalars = [v for v in md.variables.values() if v.causality == "output" and not v.is_array]
         arrays = [v for v in md.variables.values() if v.causality == "output" and v.is_array and v.type == "Float64"]
@@ -274,17 +273,11 @@ class State:
         self.finished = simulation.finished
 
     def __bytes__(self):
-        simulation = self._live()
-        return simulation._instance.serialize_state(self._handle)
-
-    def to_bytes(self):
-        return bytes(self)
-
-    def _live(self):
+        """fmi3SerializeFMUState: the state as bytes that any instance of the FMU can restore."""
         simulation = self._simulation()
         if simulation is None or self._handle is None or not simulation._instance.alive:
             raise PeriStepError("the state has been freed")
-        return simulation
+        return simulation._instance.serialize_state(self._handle)
 
     def free(self):
         """fmi3FreeFMUState; safe to call twice."""

@@ -3,7 +3,7 @@ import os
 import subprocess
 from pathlib import Path
 
-import peristep  # first: it sets the process environment before numpy loads OpenBLAS
+import peristep  # noqa: F401 (first: it sets the process environment before numpy loads OpenBLAS)
 import pytest
 
 

@@ -34,7 +34,15 @@ def test_scalars_and_input_equal_the_host(host_run, history):
 
 
 def test_history_as_frame(fmu):
-    pandas = pytest.importorskip("pandas")
+    """A DataFrame of the scalars where pandas is installed; a clear error where it is not."""
+    try:
+        import pandas
+    except ImportError:
+        pandas = None
     with peristep.Simulation("smooth", fmu=fmu, nx=9, ny=9) as sim:
+        if pandas is None:
+            with pytest.raises(peristep.PeriStepError, match="needs pandas"):
+                sim.run(load=(0, 1), steps=2, as_frame=True)
+            return
         frame = sim.run(load=(0, 1), steps=2, as_frame=True)
     assert isinstance(frame, pandas.DataFrame) and list(frame["loadFactor"]) == [0.5, 1.0]
