@@ -3,6 +3,7 @@
 Nothing about the component is known in advance: every name, value reference, type and array shape the
 package uses comes from here.
 """
+import difflib
 import re
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
@@ -111,7 +112,6 @@ class ModelDescription:
 
     def suggest(self, name):
         """'; did you mean a, b?' for the variable names closest to name, or ''."""
-        import difflib
         same_letters = [v for v in self.variables if v.lower() == name.lower()]
         close = same_letters + [v for v in difflib.get_close_matches(name, self.variables, n=3, cutoff=0.6)
                                 if v not in same_letters]

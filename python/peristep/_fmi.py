@@ -57,7 +57,6 @@ class Library:
             self._dll = C.CDLL(str(path))
         except OSError as e:
             raise PeriStepError(f"cannot load {path}: {e}") from None
-        self.path = path
         for name, (restype, argtypes) in _PROTOTYPES.items():
             try:
                 f = getattr(self._dll, name)

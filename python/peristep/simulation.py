@@ -42,14 +42,18 @@ class Simulation:
 
         self._instance = Instance(model.library, md.instantiation_token, "peristep.Simulation", model.resource_path)
         self._states = weakref.WeakSet()
-        if configured:
-            self._instance.enter_configuration_mode()
-            for name in configured:
-                self._instance.set(md.variables[name], np.array([structural[name]], dtype=np.uint64))
-            self._instance.exit_configuration_mode()
-        for v, values in flat:
-            if v.causality != "structuralParameter":
-                self._instance.set(v, values)
+        try:
+            if configured:
+                self._instance.enter_configuration_mode()
+                for name in configured:
+                    self._instance.set(md.variables[name], np.array([structural[name]], dtype=np.uint64))
+                self._instance.exit_configuration_mode()
+            for v, values in flat:
+                if v.causality != "structuralParameter":
+                    self._instance.set(v, values)
+        except PeriStepError:
+            self._instance.free()  # a refused value ends the instance: no one else can free it
+            raise
 
         scene_name = parameters.get("scene")
         if scene_name is None and "scene" in md.variables and md.variables["scene"].start is not None:
