@@ -8,6 +8,7 @@ glibc's tunables and OpenBLAS want."""
 import os
 import pickle
 import queue
+import site
 import subprocess
 import sys
 import threading
@@ -22,9 +23,11 @@ def run_in_workers(function, jobs, processes, environment):
     env = dict(os.environ)
     for name, value in environment.items():
         env.setdefault(name, value)
-    # The workers import this very package, installed or not.
-    env["PYTHONPATH"] = os.pathsep.join([str(Path(__file__).resolve().parent.parent)] +
-                                        ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
+    # The workers import this very package: where it is not installed, from the directory it was found in
+    # (an installed one stays off PYTHONPATH, which would put site-packages before the standard library).
+    here = str(Path(__file__).resolve().parent.parent)
+    if here not in {str(Path(p).resolve()) for p in site.getsitepackages() + [site.getusersitepackages()]}:
+        env["PYTHONPATH"] = os.pathsep.join([here] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
     pending = queue.Queue()
     for k, job in enumerate(jobs):
         pending.put(k)
@@ -40,14 +43,17 @@ def run_in_workers(function, jobs, processes, environment):
                     k = pending.get_nowait()
                 except queue.Empty:
                     break
-                pickle.dump((function.__module__, function.__name__, jobs[k]), worker.stdin)
-                worker.stdin.flush()
                 try:
+                    pickle.dump((function.__module__, function.__name__, jobs[k]), worker.stdin)
+                    worker.stdin.flush()
                     results[k] = pickle.load(worker.stdout)
-                except EOFError:
+                except (EOFError, OSError):  # the worker died: its stderr has said why
                     errors.append(f"a worker process ended (exit status {worker.wait()}) during job {k + 1}")
         finally:
-            worker.stdin.close()
+            try:
+                worker.stdin.close()
+            except OSError:
+                pass
             worker.wait()
 
     threads = [threading.Thread(target=serve) for _ in range(max(1, min(processes, len(jobs))))]
