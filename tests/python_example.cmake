@@ -1,0 +1,21 @@
+# Runs a Python example, SCRIPT (cmake -P, from CTest), in WORK with the peristep package of the source tree
+# (PACKAGE on PYTHONPATH) on the build tree's FMU, unpacked into CACHE. Without numpy it SKIPS, except in CI
+# (the CI environment variable set), where the example must run.
+execute_process(COMMAND ${PYTHON} -c "import numpy" RESULT_VARIABLE numpy_missing OUTPUT_QUIET ERROR_QUIET)
+if(NOT numpy_missing EQUAL 0)
+  if(NOT "$ENV{CI}" STREQUAL "")
+    message(FATAL_ERROR "numpy does not import with ${PYTHON}; the Python example must run in CI")
+  endif()
+  message("PERISTEP_SKIP: numpy does not import with ${PYTHON}")
+  return()
+endif()
+set(ENV{PYTHONPATH} ${PACKAGE})
+set(ENV{PERISTEP_FMU} ${FMU})
+set(ENV{XDG_CACHE_HOME} ${CACHE})
+set(ENV{PYTHONDONTWRITEBYTECODE} 1)
+set(ENV{MPLBACKEND} Agg)
+file(MAKE_DIRECTORY ${WORK})
+execute_process(COMMAND ${PYTHON} ${SCRIPT} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE failed)
+if(NOT failed EQUAL 0)
+  message(FATAL_ERROR "${SCRIPT} failed (${failed})")
+endif()
