@@ -39,12 +39,12 @@
 #include "bench_cli.hpp"
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
-#include "damage_picture.hpp"
-#include "process_settings.hpp"
 #include "core/memory.hpp"
 #include "core/timer.hpp"
+#include "damage_picture.hpp"
+#include "linalg/linear_solver.hpp"
+#include "process_settings.hpp"
 #include "scenes/glass_ceramic.hpp"
-#include "solvers/linear_solver.hpp"
 
 using namespace peristep;
 

@@ -14,13 +14,13 @@
 #include <vector>
 
 #include "fracture/bond_state.hpp"
+#include "linalg/crack_zone_solver.hpp"
+#include "linalg/dense_row_update_solver.hpp"
+#include "linalg/gmres.hpp"
+#include "linalg/patch_correction.hpp"
+#include "linalg/schur_factorization.hpp"
 #include "models/lps_discretization.hpp"
 #include "models/lps_system.hpp"
-#include "solvers/crack_zone_solver.hpp"
-#include "solvers/dense_row_update_solver.hpp"
-#include "solvers/gmres.hpp"
-#include "solvers/patch_correction.hpp"
-#include "solvers/schur_factorization.hpp"
 
 #include "convection_diffusion.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "convection_diffusion.hpp"
 #include "core/memory.hpp"
-#include "solvers/gmres.hpp"
+#include "linalg/gmres.hpp"
 
 using namespace peristep;
 

@@ -4,9 +4,9 @@
 #include <catch2/catch.hpp>
 #include <memory>
 
+#include "models/elastic_scene.hpp"
 #include "models/lps_discretization.hpp"
 #include "models/lps_material.hpp"
-#include "scenes/elastic_scene.hpp"
 #include "solvers/static_lps.hpp"
 
 using namespace peristep;

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "scenes/elastic_scene.hpp"
+#include "models/elastic_scene.hpp"
 #include "solvers/static_lps.hpp"
 
 namespace peristep::testing {

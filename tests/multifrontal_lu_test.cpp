@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "core/errors.hpp"
-#include "solvers/metis_ordering.hpp"
-#include "solvers/multifrontal_lu.hpp"
+#include "linalg/metis_ordering.hpp"
+#include "linalg/multifrontal_lu.hpp"
 
 #include "convection_diffusion.hpp"
 

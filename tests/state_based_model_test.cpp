@@ -5,9 +5,9 @@
 #include <numbers>
 #include <random>
 
+#include "core/fast_exp.hpp"
 #include "dynamics_test_support.hpp"
 #include "models/boundary_function.hpp"
-#include "models/fast_exp.hpp"
 #include "quadrature/partial_area.hpp"
 
 using namespace peristep;

@@ -15,10 +15,7 @@
 #include "core/option_table.hpp"
 #include "fmi/variables.hpp"
 #include "peristep.h"
-#include "random/kl_options.hpp"
 #include "scenes/scene_model.hpp"
-#include "solvers/linear_solver_kind.hpp"
-#include "solvers/time_integrator_kind.hpp"
 
 namespace peristep::fmi {
 

@@ -9,8 +9,8 @@
 #include "core/memory.hpp"
 #include "core/number_text.hpp"
 #include "fmi/enumerations.hpp"
-#include "geometry/bar_grid.hpp"
 #include "peristep.h"
+#include "scenes/parameter_constants.hpp"
 
 namespace peristep::fmi {
 

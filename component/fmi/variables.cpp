@@ -3,9 +3,8 @@
 #include <algorithm>
 
 #include "fmi/enumerations.hpp"
-#include "geometry/point_cloud.hpp"
-#include "models/poisson_ratio.hpp"
 #include "peristep.h"
+#include "scenes/parameter_constants.hpp"
 
 namespace peristep::fmi {
 

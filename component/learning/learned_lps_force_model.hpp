@@ -3,7 +3,7 @@
 // that the solvers' code (e.g. the explicit stability limit) applies to every learned kernel unchanged.
 #include "learning/bernstein_kernel.hpp"
 #include "learning/lattice_stencil.hpp"
-#include "solvers/force_model.hpp"
+#include "models/force_model.hpp"
 
 namespace peristep::learning {
 

@@ -17,14 +17,6 @@ namespace {
 // Where a point's nonlocal partner q lies: in the bar, or in its mirror image beyond x = 0 or x = L.
 enum Side : int { Inside = 0, BeyondStart = 1, BeyondEnd = 2 };
 
-// Per point and partner (side, q): the normalized weight and the critical strain of the point's element.
-struct PartnerTable {
-  explicit PartnerTable(std::size_t points) : points(points), weight(3 * points * points, 0.0), strain(3 * points * points, 0.0) {}
-  std::size_t at(std::size_t p, int side, std::size_t q) const { return (static_cast<std::size_t>(side) * points + p) * points + q; }
-  std::size_t points;
-  std::vector<double> weight, strain;
-};
-
 void validate(const GamutBarSpec& s) {
   const RambergOsgood& m = s.material;
   require(m.youngsModulus > 0 && m.yieldStress > 0 && m.failureStress > 0 && m.failureStrain > 0 && m.exponent > 1 &&
@@ -39,14 +31,29 @@ void validate(const GamutBarSpec& s) {
 
 }  // namespace
 
+// Per point and partner (side, q): the normalized weight and the critical strain of the point's element.
+struct GamutBar::PartnerTable {
+  explicit PartnerTable(std::size_t points) : points(points), weight(3 * points * points, 0.0), strain(3 * points * points, 0.0) {}
+  std::size_t at(std::size_t p, int side, std::size_t q) const { return (static_cast<std::size_t>(side) * points + p) * points + q; }
+  std::size_t points;
+  std::vector<double> weight, strain;
+};
+
 GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(spec) {
   validate(spec);
   ScatterStream stream(spec.seed, realization);
-  const std::size_t n = static_cast<std::size_t>(spec.bonds), points = n + 1;
-  const double L = spec.length, A = spec.area;
-  x_ = barGrid(L, spec.bonds, spec.gridJitter, stream);
+  x_ = barGrid(spec.length, spec.bonds, spec.gridJitter, stream);
+  const std::vector<double> softness = drawProperties(stream);
+  const PartnerTable table = slipLadders(stream);
+  firstElement_.push_back(0);  // bond b's elements are [firstElement_[b], firstElement_[b + 1])
+  addLocalBonds(addNonlocalBonds(table, softness));
+}
 
-  // Point properties: E by 002:(26); R from 002:(30) with the point's E, then scattered by (26) itself.
+// Point properties: E by 002:(26) into modulus_; returns R from 002:(30) with the point's E, then
+// scattered by (26) itself.
+std::vector<double> GamutBar::drawProperties(ScatterStream& stream) {
+  const GamutBarSpec& spec = spec_;
+  const std::size_t points = x_.size();
   modulus_.resize(points);
   std::vector<double> softness(points);
   for (double& E : modulus_) E = spec.material.youngsModulus * (spec.scatterProperties ? stream.positiveFactor(spec.scatter) : 1.0);
@@ -61,15 +68,14 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
       while (R >= 1 || R <= 0);
     softness[p] = R;
   }
-  // Length of a point's local volume (mirrored at the ends).
-  std::vector<double> cell(points);
-  for (std::size_t p = 0; p < points; ++p) {
-    const double left = p > 0 ? x_[p] - x_[p - 1] : x_[1] - x_[0];
-    const double right = p < n ? x_[p + 1] - x_[p] : x_[n] - x_[n - 1];
-    cell[p] = 0.5 * (left + right);
-  }
+  return softness;
+}
 
-  // Weights and the ladder of critical strains, point by point.
+// Weights and the ladder of critical strains, point by point.
+GamutBar::PartnerTable GamutBar::slipLadders(ScatterStream& stream) const {
+  const GamutBarSpec& spec = spec_;
+  const std::size_t points = x_.size(), n = points - 1;
+  const double L = spec.length;
   PartnerTable table(points);
   std::vector<std::tuple<double, int, std::size_t>> partners;  // (distance, side, q)
   std::vector<double> distance, weight;
@@ -137,42 +143,54 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
       }
     }
   }
+  return table;
+}
 
-  // Bonds and their elements.
-  firstElement_.push_back(0);
-  auto addBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l, GamutBondPoints where) {
-    std::array<int, 3> u{-1, -1, -1};
-    std::array<double, 3> c{0, 0, 0};
-    int terms = 0;
-    for (int k = 0; k < 3; ++k) {
-      if (nodes[k] <= 0 || coefs[k] == 0) continue;  // node 0 is fixed
-      const int unknown = nodes[k] - 1;
-      int slot = 0;
-      while (slot < terms && u[slot] != unknown) ++slot;
-      if (slot == terms) u[terms++] = unknown;
-      c[slot] += coefs[k];
-    }
-    unknown_.push_back(u);
-    coef_.push_back(c);
-    length_.push_back(l);
-    points_.push_back(where);
-    firstElement_.push_back(stiffness_.size());
-  };
-  auto addElement = [&](double k, double strain, double l) {
-    stiffness_.push_back(k);
-    cap_.push_back(k * strain * l);
-  };
+void GamutBar::addElement(double k, double strain, double l) {
+  stiffness_.push_back(k);
+  cap_.push_back(k * strain * l);
+}
+
+// Closes the bond whose elements were added since the last one: u_bond = sum coefs[k] u_(nodes[k]) (node 0
+// is fixed, -1 unused). False, and nothing added, when it has no element.
+bool GamutBar::closeBond(std::array<int, 3> nodes, std::array<double, 3> coefs, double l, GamutBondKind kind,
+                         std::size_t p, std::size_t q) {
+  if (stiffness_.size() == firstElement_.back()) return false;
+  std::array<int, 3> u{-1, -1, -1};
+  std::array<double, 3> c{0, 0, 0};
+  int terms = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (nodes[k] <= 0 || coefs[k] == 0) continue;  // node 0 is fixed
+    const int unknown = nodes[k] - 1;
+    int slot = 0;
+    while (slot < terms && u[slot] != unknown) ++slot;
+    if (slot == terms) u[terms++] = unknown;
+    c[slot] += coefs[k];
+  }
+  unknown_.push_back(u);
+  coef_.push_back(c);
+  length_.push_back(l);
+  points_.push_back({kind, static_cast<int>(p), static_cast<int>(q)});
+  firstElement_.push_back(stiffness_.size());
+  return true;
+}
+
+// The nonlocal bonds, inside the bar and across its mirrored ends; returns the cuts each crosses.
+std::vector<CutCrossing> GamutBar::addNonlocalBonds(const PartnerTable& table, const std::vector<double>& softness) {
+  const std::size_t points = x_.size(), n = points - 1;
+  const double L = spec_.length, A = spec_.area;
+  // Length of a point's local volume (mirrored at the ends).
+  std::vector<double> cell(points);
+  for (std::size_t p = 0; p < points; ++p) {
+    const double left = p > 0 ? x_[p] - x_[p - 1] : x_[1] - x_[0];
+    const double right = p < n ? x_[p + 1] - x_[p] : x_[n] - x_[n - 1];
+    cell[p] = 0.5 * (left + right);
+  }
   // Nonlocal element of owner o on a bond of length l: U_NL = w R U_L (002:(24)) under a uniform strain.
   auto addNonlocal = [&](std::size_t o, int side, std::size_t q, double l) {
     const std::size_t at = table.at(o, side, q);
-    if (table.weight[at] >= spec.weightCutoff)
+    if (table.weight[at] >= spec_.weightCutoff)
       addElement(table.weight[at] * softness[o] * A * modulus_[o] * cell[o] / (l * l), table.strain[at], l);
-  };
-  auto closeBond = [&](std::array<int, 3> nodes, std::array<double, 3> coefs, double l, GamutBondKind kind, std::size_t p,
-                       std::size_t q) {
-    if (stiffness_.size() == firstElement_.back()) return false;
-    addBond(nodes, coefs, l, {kind, static_cast<int>(p), static_cast<int>(q)});
-    return true;
   };
   std::vector<CutCrossing> crossings;  // cuts j (between points j and j + 1) crossed by each bond
   auto cross = [&](std::size_t first, std::size_t end, double multiplicity) {
@@ -208,8 +226,13 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
         if (q != p) cross(q, n, 1);
       }
     }
+  return crossings;
+}
 
-  // Local bonds (002:(28)): each takes what the nonlocal elements leave of A sigma_RO(eps) at its cut.
+// Local bonds (002:(28)): each takes what the nonlocal elements leave of A sigma_RO(eps) at its cut.
+void GamutBar::addLocalBonds(const std::vector<CutCrossing>& crossings) {
+  const GamutBarSpec& spec = spec_;
+  const std::size_t n = x_.size() - 1;
   const std::vector<double> knots = localKnots(spec.material.yieldStress / spec.material.youngsModulus + spec.material.yieldOffset,
                                                spec.material.failureStrain);
   const std::size_t m = knots.size();
@@ -218,7 +241,7 @@ GamutBar::GamutBar(const GamutBarSpec& spec, std::uint64_t realization) : spec_(
   for (std::size_t j = 0; j < n; ++j) {
     RambergOsgood own = spec.material;
     own.youngsModulus = modulus_[j];
-    for (std::size_t k = 0; k < m; ++k) remainder[k] = A * own.stress(knots[k]) - nonlocal[j * m + k];
+    for (std::size_t k = 0; k < m; ++k) remainder[k] = spec.area * own.stress(knots[k]) - nonlocal[j * m + k];
     const LocalBundle bundle = localBundle(knots, remainder);
     const double l = x_[j + 1] - x_[j];
     for (std::size_t e = 0; e < bundle.stiffness.size(); ++e)

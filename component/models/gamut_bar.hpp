@@ -37,6 +37,8 @@
 
 namespace peristep {
 
+struct CutCrossing;  // models/gamut_local_bonds.hpp
+
 struct GamutBarSpec {
   RambergOsgood material = gamutMaterial1();
   double length = 0.1;  // L [m]
@@ -84,6 +86,16 @@ class GamutBar {
   const std::vector<double>& elementCap() const { return cap_; }              // slip force, N
 
  private:
+  // The steps of the constructor.
+  struct PartnerTable;
+  std::vector<double> drawProperties(ScatterStream& stream);
+  PartnerTable slipLadders(ScatterStream& stream) const;
+  std::vector<CutCrossing> addNonlocalBonds(const PartnerTable& table, const std::vector<double>& softness);
+  void addLocalBonds(const std::vector<CutCrossing>& crossings);
+  void addElement(double k, double strain, double l);
+  bool closeBond(std::array<int, 3> nodes, std::array<double, 3> coefs, double l, GamutBondKind kind, std::size_t p,
+                 std::size_t q);
+
   GamutBarSpec spec_;
   std::vector<double> x_, modulus_;
   std::vector<std::array<int, 3>> unknown_;

@@ -10,12 +10,6 @@
 
 namespace peristep {
 
-std::vector<char> DofMap::thetaPoints() const {
-  std::vector<char> t(theta.size());
-  for (std::size_t p = 0; p < theta.size(); ++p) t[p] = theta[p] >= 0;
-  return t;
-}
-
 DofMap numberDofs(const PointCloud& c, const Neighbours& nb) {
   std::vector<char> needsTheta(c.size(), 0);
   for (std::size_t p : c.domain) {

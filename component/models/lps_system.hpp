@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/csr_matrix.hpp"
+#include "geometry/dof_map.hpp"
 #include "geometry/neighbours.hpp"
 #include "geometry/point_cloud.hpp"
 
@@ -14,26 +15,7 @@ namespace peristep {
 // Scaled kernel 000:(4.2), normalized so that int K z z^T dz = I (theta = div u for linear u).
 inline double lpsKernel(double r, double delta) { return 3.0 / (std::numbers::pi * delta * delta * delta * r); }
 
-// Unknowns: u on the domain points, theta on the domain and on every collar point within delta of it;
-// u on the rest of the collar is prescribed (000 Sec. 2.1). Numbered point by point (u_x, u_y, theta)
-// so that the matrix keeps the locality of the cloud.
-struct DofMap {
-  std::vector<std::int64_t> u;      // per point: index of u_x (u_y follows), -1 where u is prescribed
-  std::vector<std::int64_t> theta;  // per point: index of theta, -1 where theta is not needed
-  std::int64_t size = 0;
-
-  std::vector<char> thetaPoints() const;  // 1 where theta is an unknown
-
-  // f(row) for the unknowns of point p, in their order.
-  template <class F>
-  void forEachRow(std::size_t p, F&& f) const {
-    if (u[p] >= 0) {
-      f(u[p]);
-      f(u[p] + 1);
-    }
-    if (theta[p] >= 0) f(theta[p]);
-  }
-};
+// The unknowns of 000:(3.1)-(3.2) (geometry/dof_map.hpp) for a cloud and its neighbour lists.
 DofMap numberDofs(const PointCloud& cloud, const Neighbours& nb);
 
 // The linear system A x = b - B g, where g holds the prescribed displacements of all points

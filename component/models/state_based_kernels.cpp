@@ -1,6 +1,6 @@
 #include "models/state_based_kernels.hpp"
 
-#include "models/fast_exp.hpp"
+#include "core/fast_exp.hpp"
 #include "models/state_based_bonds.hpp"
 
 #define PERISTEP_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))

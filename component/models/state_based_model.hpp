@@ -3,10 +3,10 @@
 // differences with the partial-area quadrature 001:(103).
 #include <vector>
 
+#include "models/force_model.hpp"
 #include "models/state_based_bonds.hpp"
 #include "models/state_based_kernels.hpp"
 #include "models/state_based_material.hpp"
-#include "solvers/force_model.hpp"
 
 namespace peristep {
 

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/fast_exp.hpp"
 #include "core/parallel_errors.hpp"
-#include "models/fast_exp.hpp"
 #include "random/randomized_eigen.hpp"
 
 namespace peristep {

@@ -9,7 +9,7 @@
 // complex stress intensity: sigma_yy + i sigma_xy = K r^(i eps) / sqrt(2 pi r) ahead of the tip.
 #include <complex>
 
-#include "scenes/elastic_scene.hpp"
+#include "models/elastic_scene.hpp"
 
 namespace peristep {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/option_table.hpp"
-#include "scenes/elastic_scene.hpp"
+#include "models/elastic_scene.hpp"
 
 namespace peristep {
 

@@ -19,7 +19,8 @@ struct Crystal {
   double cx = 0.0, cy = 0.0, angle = 0.0;  // centre in the domain centred at the origin; major axis angle
 };
 
-// Cells per semi-minor axis of the raster on which the covered fraction is measured while placing.
+// Cells per semi-minor axis of the raster on which the covered fraction is measured while placing
+// (docs/decisions/0021-grid-independent-microstructure.md).
 inline constexpr double kCoverRasterPerMinorAxis = 4.0;
 
 // Crystals of a seed on the Lx x Ly domain centred at the origin: drawn until their union covers a

@@ -11,10 +11,10 @@
 
 #include "core/progress.hpp"
 #include "geometry/point_cloud.hpp"
+#include "linalg/linear_solver_kind.hpp"
 #include "models/gamut_bar.hpp"
 #include "random/kl_options.hpp"
 #include "scenes/specimen.hpp"
-#include "solvers/linear_solver_kind.hpp"
 #include "solvers/time_integrator_kind.hpp"
 
 namespace peristep {

@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "solvers/force_model.hpp"
+#include "models/force_model.hpp"
 
 namespace peristep {
 

@@ -17,9 +17,9 @@
 #include <Eigen/Dense>
 
 #include "core/errors.hpp"
+#include "linalg/dense_cholesky.hpp"
 #include "models/gamut_bar.hpp"
 #include "solvers/gamut_pair_kernels.hpp"
-#include "solvers/dense_cholesky.hpp"
 
 namespace peristep {
 

@@ -7,9 +7,9 @@
 #include "core/byte_stream.hpp"
 #include "core/errors.hpp"
 #include "core/timer.hpp"
+#include "linalg/gmres.hpp"
 #include "models/collar_force.hpp"
 #include "models/lps_material.hpp"
-#include "solvers/gmres.hpp"
 
 namespace peristep {
 namespace {

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "fracture/bond_state.hpp"
+#include "linalg/crack_zone_solver.hpp"
+#include "linalg/gmres.hpp"
+#include "linalg/linear_solver.hpp"
 #include "models/lps_discretization.hpp"
-#include "solvers/crack_zone_solver.hpp"
-#include "solvers/gmres.hpp"
-#include "solvers/linear_solver.hpp"
 
 namespace peristep {
 
@@ -56,7 +56,7 @@ inline constexpr FactorPrecision kZoneFactorPrecision = FactorPrecision::Single;
 
 // How the solves after a break use the factorization of an older matrix.
 enum class FactorizationReuse {
-  // One sparse factorization per crack zone (solvers/crack_zone_solver.hpp): the zone around the bonds
+  // One sparse factorization per crack zone (linalg/crack_zone_solver.hpp): the zone around the bonds
   // closest to breaking is condensed to a dense Schur complement that takes up the rows that breaking
   // changes, so that a new sparse factorization is needed only when the crack leaves the zone (production).
   CrackZone,

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "linalg/linear_solver.hpp"
+#include "models/elastic_scene.hpp"
 #include "models/lps_discretization.hpp"
-#include "scenes/elastic_scene.hpp"
-#include "solvers/linear_solver.hpp"
 
 namespace peristep {
 

@@ -35,6 +35,12 @@ class MultifrontalLu {
   bool analyzed() const { return n_ > 0; }
 
  private:
+  // The steps of analyze().
+  std::vector<Index> labelInPostorder(const std::vector<Index>& treeParent, const std::vector<std::int32_t>& position,
+                                      const std::vector<std::int64_t>& schurUnknowns);
+  std::vector<Index> setSupernodes(const std::vector<Index>& parent, const std::vector<std::int64_t>& count);
+  void placeEntries(const CsrMatrix& A, const std::vector<Index>& nodeOfColumn);
+  void measureFronts();
   void forward();
   void backward();
   void splitForSubstitutions();

@@ -1,23 +1,16 @@
-#include "solvers/multifrontal_lu.hpp"
+#include "linalg/multifrontal_lu.hpp"
 
 #include <algorithm>
+#include <cblas.h>
 #include <cmath>
 #include <cstring>
-#include <omp.h>
 #include <limits>
+#include <omp.h>
 #include <string>
 
 #include "core/errors.hpp"
 #include "core/memory.hpp"
 
-extern "C" {
-void sgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const float* alpha,
-            const float* a, const int* lda, const float* b, const int* ldb, const float* beta, float* c,
-            const int* ldc, std::size_t, std::size_t);
-void strsm_(const char* side, const char* uplo, const char* trans, const char* diag, const int* m, const int* n,
-            const float* alpha, const float* a, const int* lda, float* b, const int* ldb, std::size_t, std::size_t,
-            std::size_t, std::size_t);
-}
 
 namespace peristep {
 namespace {
@@ -98,8 +91,7 @@ Graph relabelled(const Graph& g, const std::vector<Index>& position, const std::
 void subtractProduct(int m, int n, int k, const float* a, int lda, const float* b, int ldb, float* c, int ldc) {
   if (m == 0 || n == 0 || k == 0) return;
   if (static_cast<std::int64_t>(m) * n * k > 32768) {
-    const float minusOne = -1.0f, one = 1.0f;
-    sgemm_("N", "N", &m, &n, &k, &minusOne, a, &lda, b, &ldb, &one, c, &ldc, 1, 1);
+    cblas_sgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, m, n, k, -1.0f, a, lda, b, ldb, 1.0f, c, ldc);
     return;
   }
   for (int j = 0; j < n; ++j) {
@@ -116,8 +108,7 @@ void subtractProduct(int m, int n, int k, const float* a, int lda, const float* 
 void solveUnitLower(int m, int n, const float* l, int ldl, float* b, int ldb) {
   if (m == 0 || n == 0) return;
   if (static_cast<std::int64_t>(m) * m * n > 32768) {
-    const float one = 1.0f;
-    strsm_("L", "L", "N", "U", &m, &n, &one, l, &ldl, b, &ldb, 1, 1, 1, 1);
+    cblas_strsm(CblasColMajor, CblasLeft, CblasLower, CblasNoTrans, CblasUnit, m, n, 1.0f, l, ldl, b, ldb);
     return;
   }
   for (int j = 0; j < n; ++j) {
@@ -134,8 +125,7 @@ void solveUnitLower(int m, int n, const float* l, int ldl, float* b, int ldb) {
 void solveUpperRight(int m, int n, const float* u, int ldu, float* b, int ldb) {
   if (m == 0 || n == 0) return;
   if (static_cast<std::int64_t>(m) * n * n > 32768) {
-    const float one = 1.0f;
-    strsm_("R", "U", "N", "N", &m, &n, &one, u, &ldu, b, &ldb, 1, 1, 1, 1);
+    cblas_strsm(CblasColMajor, CblasRight, CblasUpper, CblasNoTrans, CblasNonUnit, m, n, 1.0f, u, ldu, b, ldb);
     return;
   }
   for (int j = 0; j < n; ++j) {
@@ -205,6 +195,174 @@ PERISTEP_CLONES void subtractColumns(float* __restrict t, const float* __restric
   }
 }
 
+// Elimination tree of the first nF unknowns of g in their order (Liu's algorithm with path compression).
+std::vector<Index> eliminationTree(const Graph& g, std::size_t nF) {
+  std::vector<Index> parent(nF, -1), ancestor(nF, -1);
+  for (std::size_t i = 0; i < nF; ++i)
+    for (Index k : g.of(static_cast<std::int64_t>(i)))
+      for (Index next; k != -1 && static_cast<std::size_t>(k) < i; k = next) {
+        next = ancestor[static_cast<std::size_t>(k)];
+        ancestor[static_cast<std::size_t>(k)] = static_cast<Index>(i);
+        if (next == -1) parent[static_cast<std::size_t>(k)] = static_cast<Index>(i);
+      }
+  return parent;
+}
+
+// Rank of each node in a postorder of the forest (children in their given order), so that every subtree
+// is a contiguous range.
+std::vector<Index> postorderRanks(const std::vector<Index>& treeParent) {
+  const std::size_t nF = treeParent.size();
+  std::vector<Index> childHead(nF, -1), nextSibling(nF, -1), postRank(nF);
+  for (std::size_t j = nF; j-- > 0;)
+    if (treeParent[j] != -1) {
+      nextSibling[j] = childHead[static_cast<std::size_t>(treeParent[j])];
+      childHead[static_cast<std::size_t>(treeParent[j])] = static_cast<Index>(j);
+    }
+  Index next = 0;
+  std::vector<Index> stack;
+  for (std::size_t root = 0; root < nF; ++root) {
+    if (treeParent[root] != -1) continue;
+    stack.push_back(static_cast<Index>(root));
+    while (!stack.empty()) {
+      const Index v = stack.back();
+      const Index c = childHead[static_cast<std::size_t>(v)];
+      if (c != -1) {
+        childHead[static_cast<std::size_t>(v)] = nextSibling[static_cast<std::size_t>(c)];
+        stack.push_back(c);
+      } else {
+        postRank[static_cast<std::size_t>(v)] = next++;
+        stack.pop_back();
+      }
+    }
+  }
+  return postRank;
+}
+
+// Column counts of L (rows below the diagonal, Z rows included) for the postordered tree `parent` of the
+// first nF of n unknowns: Gilbert, Ng and Peyton's skeleton algorithm (as in CSparse's cs_counts) in
+// O(|A|), where walking each row's subtree cost O(|L|): 0.38 s per zone at h = 2 um. A virtual root nF
+// above the forest's roots tops the row subtrees of the Z rows, which in the F forest end at its roots.
+std::vector<std::int64_t> columnCounts(const Graph& g, const std::vector<Index>& parent, std::size_t n) {
+  const std::size_t nF = parent.size(), root = nF;
+  // link: union-find towards the lowest common ancestor of two leaves of a row subtree.
+  std::vector<Index> up(nF + 1, -1), first(nF + 1, -1), link(nF + 1), maxFirst(n, -1), prevLeaf(n, -1);
+  std::vector<std::int64_t> delta(nF + 1, 0);
+  for (std::size_t j = 0; j < nF; ++j) up[j] = parent[j] == -1 ? static_cast<Index>(root) : parent[j];
+  for (std::size_t k = 0; k <= nF; ++k) {
+    delta[k] = first[k] == -1 ? 1 : 0;  // an etree leaf: its row has only the diagonal
+    for (Index j = static_cast<Index>(k); j != -1 && first[static_cast<std::size_t>(j)] == -1; j = up[static_cast<std::size_t>(j)])
+      first[static_cast<std::size_t>(j)] = static_cast<Index>(k);
+    link[k] = static_cast<Index>(k);
+  }
+  for (std::size_t j = 0; j < nF; ++j) {
+    --delta[static_cast<std::size_t>(up[j])];
+    for (Index i : g.of(static_cast<std::int64_t>(j))) {
+      const auto row = static_cast<std::size_t>(i);
+      // Is j a leaf of row i's subtree (no column of it in j's subtree seen yet)?
+      if (row <= j || first[j] <= maxFirst[row]) continue;
+      maxFirst[row] = first[j];
+      const Index previous = prevLeaf[row];
+      prevLeaf[row] = static_cast<Index>(j);
+      ++delta[j];
+      if (previous == -1) continue;
+      // Overlap with the path from the previous leaf: subtract at their lowest common ancestor.
+      Index q = previous;
+      while (q != link[static_cast<std::size_t>(q)]) q = link[static_cast<std::size_t>(q)];
+      for (Index s = previous; s != q;) {
+        const Index next = link[static_cast<std::size_t>(s)];
+        link[static_cast<std::size_t>(s)] = q;
+        s = next;
+      }
+      --delta[static_cast<std::size_t>(q)];
+    }
+    link[j] = up[j];
+  }
+  for (std::size_t j = 0; j < nF; ++j) delta[static_cast<std::size_t>(up[j])] += delta[j];
+  std::vector<std::int64_t> count(nF);
+  for (std::size_t j = 0; j < nF; ++j) count[j] = delta[j] - 1;
+  return count;
+}
+
+// Entries of a supernode of p columns and m rows (the square block and the rectangle below it).
+std::int64_t frontStorage(std::int64_t p, std::int64_t m) { return p * (2 * m - p); }
+
+// Supernodes as ranges of columns: fundamental supernodes (chains j -> j + 1 where j is the only child and
+// the structure just shrinks by one), then relaxed amalgamation (CHOLMOD's rule): a supernode absorbs the
+// child just before it while the explicit zeros this adds stay small against its size; larger fronts make
+// the dense kernels efficient. Returns the first column of each supernode and nF.
+std::vector<Index> amalgamatedSupernodes(const std::vector<Index>& parent, const std::vector<std::int64_t>& count) {
+  const std::size_t nF = parent.size();
+  std::vector<Index> childCount(nF, 0);
+  for (std::size_t j = 0; j < nF; ++j)
+    if (parent[j] != -1) ++childCount[static_cast<std::size_t>(parent[j])];
+  std::vector<Index> fundFirst, fundOf(nF);
+  for (std::size_t j = 0; j < nF; ++j) {
+    const bool extends = j > 0 && parent[j - 1] == static_cast<Index>(j) && childCount[j] == 1 && count[j - 1] == count[j] + 1;
+    if (!extends) fundFirst.push_back(static_cast<Index>(j));
+    fundOf[j] = static_cast<Index>(fundFirst.size() - 1);
+  }
+  fundFirst.push_back(static_cast<Index>(nF));
+  struct Node {
+    Index firstFund, lastFund;
+    std::int64_t cols, rows, zeros;
+  };
+  std::vector<Node> nodes;
+  for (std::size_t f = 0; f + 1 < fundFirst.size(); ++f) {
+    const std::int64_t p = fundFirst[f + 1] - fundFirst[f];
+    Node P{static_cast<Index>(f), static_cast<Index>(f), p, p + count[static_cast<std::size_t>(fundFirst[f + 1] - 1)], 0};
+    while (!nodes.empty()) {
+      const Node& C = nodes.back();
+      const Index lastColumn = fundFirst[static_cast<std::size_t>(C.lastFund) + 1] - 1;
+      const Index up = parent[static_cast<std::size_t>(lastColumn)];
+      if (up == -1 || fundOf[static_cast<std::size_t>(up)] < P.firstFund || fundOf[static_cast<std::size_t>(up)] > P.lastFund) break;
+      const std::int64_t cols = C.cols + P.cols, rows = C.cols + P.rows, total = frontStorage(cols, rows);
+      const std::int64_t zeros = C.zeros + P.zeros + total - frontStorage(C.cols, C.rows) - frontStorage(P.cols, P.rows);
+      const double share = static_cast<double>(zeros) / static_cast<double>(total);
+      if (!(cols <= 4 || (cols <= 16 && share < 0.8) || (cols <= 48 && share < 0.1) || share < 0.05)) break;
+      P = Node{C.firstFund, P.lastFund, cols, rows, zeros};
+      nodes.pop_back();
+    }
+    nodes.push_back(P);
+  }
+  std::vector<Index> first(nodes.size() + 1);
+  for (std::size_t s = 0; s < nodes.size(); ++s) first[s] = fundFirst[static_cast<std::size_t>(nodes[s].firstFund)];
+  first[nodes.size()] = static_cast<Index>(nF);
+  return first;
+}
+
+// Row lists: a supernode's columns, then the union of its columns' pattern and its children's rows below it.
+void rowLists(const Graph& g, std::size_t n, const std::vector<Index>& first, const std::vector<Index>& childStart,
+              const std::vector<Index>& children, std::vector<std::int64_t>& rowStart, std::vector<Index>& rows) {
+  const std::size_t ns = first.size() - 1;
+  rowStart.assign(ns + 1, 0);
+  rows.clear();
+  std::vector<Index> mark(n, -1), below;
+  for (std::size_t s = 0; s < ns; ++s) {
+    const Index f = first[s], l = first[s + 1] - 1;
+    for (Index j = f; j <= l; ++j) {
+      rows.push_back(j);
+      mark[static_cast<std::size_t>(j)] = static_cast<Index>(s);
+    }
+    below.clear();
+    auto take = [&](Index i) {
+      if (i > l && mark[static_cast<std::size_t>(i)] != static_cast<Index>(s)) {
+        mark[static_cast<std::size_t>(i)] = static_cast<Index>(s);
+        below.push_back(i);
+      }
+    };
+    for (Index j = f; j <= l; ++j)
+      for (Index i : g.of(j)) take(i);
+    for (Index k = childStart[s]; k < childStart[s + 1]; ++k) {
+      const auto c = static_cast<std::size_t>(children[static_cast<std::size_t>(k)]);
+      for (std::int64_t t = rowStart[c] + (first[c + 1] - first[c]); t < rowStart[c + 1]; ++t)
+        take(rows[static_cast<std::size_t>(t)]);
+    }
+    std::sort(below.begin(), below.end());
+    rows.insert(rows.end(), below.begin(), below.end());
+    rowStart[s + 1] = static_cast<std::int64_t>(rows.size());
+  }
+}
+
 }  // namespace
 
 void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>& position, std::size_t schurCount,
@@ -218,48 +376,30 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
   n_ = A.rows;
   z_ = static_cast<std::int64_t>(schurCount);
   nF_ = n_ - z_;
-  const auto n = static_cast<std::size_t>(n_), nF = static_cast<std::size_t>(nF_);
+  const auto nF = static_cast<std::size_t>(nF_);
 
-  // Elimination tree of the F unknowns in the given order (Liu's algorithm with path compression).
   Graph g = symmetricGraph(A, position);
-  std::vector<Index> treeParent(nF, -1), ancestor(nF, -1);
-  for (std::size_t i = 0; i < nF; ++i)
-    for (Index k : g.of(static_cast<std::int64_t>(i)))
-      for (Index next; k != -1 && static_cast<std::size_t>(k) < i; k = next) {
-        next = ancestor[static_cast<std::size_t>(k)];
-        ancestor[static_cast<std::size_t>(k)] = static_cast<Index>(i);
-        if (next == -1) treeParent[static_cast<std::size_t>(k)] = static_cast<Index>(i);
-      }
-  // Postorder (children in their given order), so that every subtree is a contiguous range of columns.
-  std::vector<Index> childHead(nF, -1), nextSibling(nF, -1), postRank(nF);
-  for (std::size_t j = nF; j-- > 0;)
-    if (treeParent[j] != -1) {
-      nextSibling[j] = childHead[static_cast<std::size_t>(treeParent[j])];
-      childHead[static_cast<std::size_t>(treeParent[j])] = static_cast<Index>(j);
-    }
-  {
-    Index next = 0;
-    std::vector<Index> stack;
-    for (std::size_t root = 0; root < nF; ++root) {
-      if (treeParent[root] != -1) continue;
-      stack.push_back(static_cast<Index>(root));
-      while (!stack.empty()) {
-        const Index v = stack.back();
-        const Index c = childHead[static_cast<std::size_t>(v)];
-        if (c != -1) {
-          childHead[static_cast<std::size_t>(v)] = nextSibling[static_cast<std::size_t>(c)];
-          stack.push_back(c);
-        } else {
-          postRank[static_cast<std::size_t>(v)] = next++;
-          stack.pop_back();
-        }
-      }
-    }
-  }
+  const std::vector<Index> parent = labelInPostorder(eliminationTree(g, nF), position, schurUnknowns);
+  g = relabelled(g, position, internal_);
+  const std::vector<Index> nodeOfColumn = setSupernodes(parent, columnCounts(g, parent, static_cast<std::size_t>(n_)));
+  rowLists(g, static_cast<std::size_t>(n_), first_, childStart_, children_, rowStart_, rows_);
+  g = {};
+  placeEntries(A, nodeOfColumn);
+  measureFronts();
+  splitForSubstitutions();
+}
+
+// internal_: the F unknowns in the postorder of their elimination tree, the Schur unknowns after them in
+// their given order. Returns the tree in the new labels.
+std::vector<MultifrontalLu::Index> MultifrontalLu::labelInPostorder(const std::vector<Index>& treeParent,
+                                                                   const std::vector<std::int32_t>& position,
+                                                                   const std::vector<std::int64_t>& schurUnknowns) {
+  const std::size_t n = static_cast<std::size_t>(n_), nF = treeParent.size();
+  const std::vector<Index> postRank = postorderRanks(treeParent);
   internal_.assign(n, -1);
   for (std::size_t u = 0; u < n; ++u)
     if (static_cast<std::size_t>(position[u]) < nF) internal_[u] = postRank[static_cast<std::size_t>(position[u])];
-  for (std::size_t t = 0; t < schurCount; ++t) {
+  for (std::size_t t = 0; t < schurUnknowns.size(); ++t) {
     const auto u = static_cast<std::size_t>(schurUnknowns[t]);
     require(static_cast<std::size_t>(position[u]) >= nF, "multifrontal LU: the Schur unknowns must come last");
     internal_[u] = static_cast<Index>(nF + t);
@@ -268,98 +408,18 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
   for (std::size_t j = 0; j < nF; ++j)
     if (treeParent[j] != -1)
       parent[static_cast<std::size_t>(postRank[j])] = postRank[static_cast<std::size_t>(treeParent[j])];
-  freeStorage(treeParent);
-  freeStorage(ancestor);
-  g = relabelled(g, position, internal_);
+  return parent;
+}
 
-  // Column counts of L (rows below the diagonal, Z rows included): Gilbert, Ng and Peyton's skeleton
-  // algorithm (as in CSparse's cs_counts) in O(|A|), where walking each row's subtree cost O(|L|): 0.38 s per
-  // zone at h = 2 um. The labels are already a postorder. A virtual root nF above the forest's roots tops the
-  // row subtrees of the Z rows, which in the F forest end at its roots.
-  std::vector<std::int64_t> count(nF, 0);
-  {
-    const std::size_t root = nF;
-    // link: union-find towards the lowest common ancestor of two leaves of a row subtree.
-    std::vector<Index> up(nF + 1, -1), first(nF + 1, -1), link(nF + 1), maxFirst(n, -1), prevLeaf(n, -1);
-    std::vector<std::int64_t> delta(nF + 1, 0);
-    for (std::size_t j = 0; j < nF; ++j) up[j] = parent[j] == -1 ? static_cast<Index>(root) : parent[j];
-    for (std::size_t k = 0; k <= nF; ++k) {
-      delta[k] = first[k] == -1 ? 1 : 0;  // an etree leaf: its row has only the diagonal
-      for (Index j = static_cast<Index>(k); j != -1 && first[static_cast<std::size_t>(j)] == -1; j = up[static_cast<std::size_t>(j)])
-        first[static_cast<std::size_t>(j)] = static_cast<Index>(k);
-      link[k] = static_cast<Index>(k);
-    }
-    for (std::size_t j = 0; j < nF; ++j) {
-      --delta[static_cast<std::size_t>(up[j])];
-      for (Index i : g.of(static_cast<std::int64_t>(j))) {
-        const auto row = static_cast<std::size_t>(i);
-        // Is j a leaf of row i's subtree (no column of it in j's subtree seen yet)?
-        if (row <= j || first[j] <= maxFirst[row]) continue;
-        maxFirst[row] = first[j];
-        const Index previous = prevLeaf[row];
-        prevLeaf[row] = static_cast<Index>(j);
-        ++delta[j];
-        if (previous == -1) continue;
-        // Overlap with the path from the previous leaf: subtract at their lowest common ancestor.
-        Index q = previous;
-        while (q != link[static_cast<std::size_t>(q)]) q = link[static_cast<std::size_t>(q)];
-        for (Index s = previous; s != q;) {
-          const Index next = link[static_cast<std::size_t>(s)];
-          link[static_cast<std::size_t>(s)] = q;
-          s = next;
-        }
-        --delta[static_cast<std::size_t>(q)];
-      }
-      link[j] = up[j];
-    }
-    for (std::size_t j = 0; j < nF; ++j) delta[static_cast<std::size_t>(up[j])] += delta[j];
-    for (std::size_t j = 0; j < nF; ++j) count[j] = delta[j] - 1;
-  }
-  // Fundamental supernodes: chains j -> j + 1 where j is the only child and the structure just shrinks by one.
-  std::vector<Index> childCount(nF, 0);
-  for (std::size_t j = 0; j < nF; ++j)
-    if (parent[j] != -1) ++childCount[static_cast<std::size_t>(parent[j])];
-  std::vector<Index> fundFirst, fundOf(nF);
-  for (std::size_t j = 0; j < nF; ++j) {
-    const bool extends = j > 0 && parent[j - 1] == static_cast<Index>(j) && childCount[j] == 1 && count[j - 1] == count[j] + 1;
-    if (!extends) fundFirst.push_back(static_cast<Index>(j));
-    fundOf[j] = static_cast<Index>(fundFirst.size() - 1);
-  }
-  fundFirst.push_back(static_cast<Index>(nF));
-  // Relaxed amalgamation (CHOLMOD's rule): a supernode absorbs the child just before it while the explicit
-  // zeros this adds stay small against its size; larger fronts make the dense kernels efficient.
-  struct Node {
-    Index firstFund, lastFund;
-    std::int64_t cols, rows, zeros;
-  };
-  auto storage = [](std::int64_t p, std::int64_t m) { return p * (2 * m - p); };
-  std::vector<Node> nodes;
-  for (std::size_t f = 0; f + 1 < fundFirst.size(); ++f) {
-    const std::int64_t p = fundFirst[f + 1] - fundFirst[f];
-    Node P{static_cast<Index>(f), static_cast<Index>(f), p, p + count[static_cast<std::size_t>(fundFirst[f + 1] - 1)], 0};
-    while (!nodes.empty()) {
-      const Node& C = nodes.back();
-      const Index lastColumn = fundFirst[static_cast<std::size_t>(C.lastFund) + 1] - 1;
-      const Index up = parent[static_cast<std::size_t>(lastColumn)];
-      if (up == -1 || fundOf[static_cast<std::size_t>(up)] < P.firstFund || fundOf[static_cast<std::size_t>(up)] > P.lastFund) break;
-      const std::int64_t cols = C.cols + P.cols, rows = C.cols + P.rows, total = storage(cols, rows);
-      const std::int64_t zeros = C.zeros + P.zeros + total - storage(C.cols, C.rows) - storage(P.cols, P.rows);
-      const double share = static_cast<double>(zeros) / static_cast<double>(total);
-      if (!(cols <= 4 || (cols <= 16 && share < 0.8) || (cols <= 48 && share < 0.1) || share < 0.05)) break;
-      P = Node{C.firstFund, P.lastFund, cols, rows, zeros};
-      nodes.pop_back();
-    }
-    nodes.push_back(P);
-  }
-  const std::size_t ns = nodes.size();
-  first_.resize(ns + 1);
+// first_, parent_ and the children lists of the supernodes; returns the supernode of each column.
+std::vector<MultifrontalLu::Index> MultifrontalLu::setSupernodes(const std::vector<Index>& parent,
+                                                                const std::vector<std::int64_t>& count) {
+  const std::size_t nF = parent.size();
+  first_ = amalgamatedSupernodes(parent, count);
+  const std::size_t ns = first_.size() - 1;
   std::vector<Index> nodeOfColumn(nF);
-  for (std::size_t s = 0; s < ns; ++s) {
-    first_[s] = fundFirst[static_cast<std::size_t>(nodes[s].firstFund)];
-    const Index end = fundFirst[static_cast<std::size_t>(nodes[s].lastFund) + 1];
-    std::fill(nodeOfColumn.begin() + first_[s], nodeOfColumn.begin() + end, static_cast<Index>(s));
-  }
-  first_[ns] = static_cast<Index>(nF);
+  for (std::size_t s = 0; s < ns; ++s)
+    std::fill(nodeOfColumn.begin() + first_[s], nodeOfColumn.begin() + first_[s + 1], static_cast<Index>(s));
   parent_.assign(ns, -1);
   for (std::size_t s = 0; s < ns; ++s) {
     const Index up = parent[static_cast<std::size_t>(first_[s + 1] - 1)];
@@ -370,45 +430,15 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
     if (parent_[s] != -1) ++childStart_[static_cast<std::size_t>(parent_[s]) + 1];
   for (std::size_t s = 0; s < ns; ++s) childStart_[s + 1] += childStart_[s];
   children_.resize(static_cast<std::size_t>(childStart_[ns]));
-  {
-    std::vector<Index> cursor(childStart_.begin(), childStart_.end() - 1);
-    for (std::size_t s = 0; s < ns; ++s)
-      if (parent_[s] != -1) children_[static_cast<std::size_t>(cursor[static_cast<std::size_t>(parent_[s])]++)] = static_cast<Index>(s);
-  }
+  std::vector<Index> cursor(childStart_.begin(), childStart_.end() - 1);
+  for (std::size_t s = 0; s < ns; ++s)
+    if (parent_[s] != -1) children_[static_cast<std::size_t>(cursor[static_cast<std::size_t>(parent_[s])]++)] = static_cast<Index>(s);
+  return nodeOfColumn;
+}
 
-  // Row lists: a supernode's columns, then the union of its columns' pattern and its children's rows below it.
-  rowStart_.assign(ns + 1, 0);
-  rows_.clear();
-  {
-    std::vector<Index> mark(n, -1), below;
-    for (std::size_t s = 0; s < ns; ++s) {
-      const Index f = first_[s], l = first_[s + 1] - 1;
-      for (Index j = f; j <= l; ++j) {
-        rows_.push_back(j);
-        mark[static_cast<std::size_t>(j)] = static_cast<Index>(s);
-      }
-      below.clear();
-      auto take = [&](Index i) {
-        if (i > l && mark[static_cast<std::size_t>(i)] != static_cast<Index>(s)) {
-          mark[static_cast<std::size_t>(i)] = static_cast<Index>(s);
-          below.push_back(i);
-        }
-      };
-      for (Index j = f; j <= l; ++j)
-        for (Index i : g.of(j)) take(i);
-      for (Index k = childStart_[s]; k < childStart_[s + 1]; ++k) {
-        const auto c = static_cast<std::size_t>(children_[static_cast<std::size_t>(k)]);
-        for (std::int64_t t = rowStart_[c] + (first_[c + 1] - first_[c]); t < rowStart_[c + 1]; ++t)
-          take(rows_[static_cast<std::size_t>(t)]);
-      }
-      std::sort(below.begin(), below.end());
-      rows_.insert(rows_.end(), below.begin(), below.end());
-      rowStart_[s + 1] = static_cast<std::int64_t>(rows_.size());
-    }
-  }
-  g = {};
-
-  // Where each of A's entries goes: the front of the supernode holding the smaller of its two indices, or S.
+// Where each of A's entries goes: the front of the supernode holding the smaller of its two indices, or S.
+void MultifrontalLu::placeEntries(const CsrMatrix& A, const std::vector<Index>& nodeOfColumn) {
+  const std::size_t n = static_cast<std::size_t>(n_), nF = static_cast<std::size_t>(nF_), ns = first_.size() - 1;
   auto localIndex = [&](std::size_t s, Index i) -> std::int64_t {
     if (i < first_[s + 1]) return i - first_[s];
     const std::int64_t p = first_[s + 1] - first_[s];
@@ -452,24 +482,25 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
   for (std::size_t s = 0; s < ns; ++s) ownStart_[s + 1] += ownStart_[s];
   ownEntry_.resize(static_cast<std::size_t>(ownStart_[ns]));
   ownOffset_.resize(ownEntry_.size());
-  {
-    std::vector<std::int64_t> cursor(ownStart_.begin(), ownStart_.end() - 1);
-    for (std::size_t e = 0; e < nnz; ++e)
-      if (owner[e] != -1) {
-        const auto at = static_cast<std::size_t>(cursor[static_cast<std::size_t>(owner[e])]++);
-        ownEntry_[at] = static_cast<Index>(e);
-        ownOffset_[at] = offset[e];
-      }
-  }
+  std::vector<std::int64_t> cursor(ownStart_.begin(), ownStart_.end() - 1);
+  for (std::size_t e = 0; e < nnz; ++e)
+    if (owner[e] != -1) {
+      const auto at = static_cast<std::size_t>(cursor[static_cast<std::size_t>(owner[e])]++);
+      ownEntry_[at] = static_cast<Index>(e);
+      ownOffset_[at] = offset[e];
+    }
+}
 
-  // Sizes: the factors, the largest front, and the peak of the stack of contribution blocks (postorder).
+// Sizes: the factors, the largest front, and the peak of the stack of contribution blocks (postorder).
+void MultifrontalLu::measureFronts() {
+  const std::size_t ns = first_.size() - 1;
   factorStart_.assign(ns + 1, 0);
   maxFront_ = 0;
   stackPeak_ = 0;
   std::int64_t stackTop = 0;
   for (std::size_t s = 0; s < ns; ++s) {
     const std::int64_t p = first_[s + 1] - first_[s], m = rowStart_[s + 1] - rowStart_[s], r = m - p;
-    factorStart_[s + 1] = factorStart_[s] + storage(p, m);
+    factorStart_[s + 1] = factorStart_[s] + frontStorage(p, m);
     maxFront_ = std::max(maxFront_, m * m);
     for (Index k = childStart_[s]; k < childStart_[s + 1]; ++k) {
       const auto c = static_cast<std::size_t>(children_[static_cast<std::size_t>(k)]);
@@ -480,8 +511,6 @@ void MultifrontalLu::analyze(const CsrMatrix& A, const std::vector<std::int32_t>
     stackPeak_ = std::max(stackPeak_, stackTop);
   }
   factorEntries_ = factorStart_[ns];
-  splitForSubstitutions();
-
 }
 
 // Two groups of whole subtrees of about equal factor size, one per core in the substitutions, and the

@@ -1,5 +1,5 @@
 #pragma once
-// A local correction for the crack-zone solver M once rows change beyond its zone (solvers/crack_zone_solver.hpp).
+// A local correction for the crack-zone solver M once rows change beyond its zone (linalg/crack_zone_solver.hpp).
 // M then differs from A only in those rows R, and M^-1 leaves its error around them. The points owning R, grown
 // by a few horizons, form a patch P; the patch's block of A (a sparse LU) is applied before and after M, a
 // multiplicative Schwarz step (E: extension from the patch by zeros):
@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "core/csr_matrix.hpp"
+#include "geometry/dof_map.hpp"
 #include "geometry/neighbours.hpp"
-#include "models/lps_system.hpp"
 
 namespace peristep {
 

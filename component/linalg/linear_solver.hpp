@@ -4,7 +4,7 @@
 #include <span>
 
 #include "core/csr_matrix.hpp"
-#include "solvers/linear_solver_kind.hpp"
+#include "linalg/linear_solver_kind.hpp"
 
 namespace peristep {
 

@@ -1,4 +1,4 @@
-#include "solvers/linear_solver.hpp"
+#include "linalg/linear_solver.hpp"
 
 #include "core/errors.hpp"
 

@@ -1,4 +1,4 @@
-#include "solvers/patch_correction.hpp"
+#include "linalg/patch_correction.hpp"
 
 #include <Eigen/SparseLU>
 #include <algorithm>

@@ -4,7 +4,7 @@
 //   (M0 + E_R D)^-1 = M0^-1 - W (I + D W)^-1 D M0^-1,   W = M0^-1 E_R,
 // R the rows changed since M0 and D their changes. A column of W costs one pair of triangular solves and
 // is computed once per row (it depends on the row only through E_R); when R grows past a fraction of the
-// size, M is factorized afresh. Used on the crack zone's Schur complement (solvers/schur_factorization.hpp).
+// size, M is factorized afresh. Used on the crack zone's Schur complement (linalg/schur_factorization.hpp).
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "solvers/gmres.hpp"
+#include "linalg/gmres.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -106,6 +106,85 @@ GmresResult gmres(const CsrMatrix& A, LinearSolver& M, std::span<const double> b
                maxIterations, restart);
 }
 
+namespace {
+
+// Least squares on the kept C through its Gram matrix, with directions the others repeat (eigenvalues below
+// 1e-12 of the largest) left out: coeff = G^+ C^T w, and w loses its part in range(C).
+class RangeProjection {
+ public:
+  // C (row-major, `stride` columns of which the first k are kept) and its Gram matrix C^T C.
+  RangeProjection(const std::vector<double>& C, const std::vector<double>& gram, std::size_t k, std::size_t stride)
+      : c_(C), k_(k), stride_(stride) {
+    if (k == 0) return;
+    Eigen::MatrixXd G(k, k);
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t c = 0; c < k; ++c) G(a, c) = gram[a * stride + c];
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
+    basis_ = eig.eigenvectors();
+    inverse_ = eig.eigenvalues();
+    const double largest = inverse_.maxCoeff();
+    for (Eigen::Index a = 0; a < inverse_.size(); ++a) inverse_(a) = inverse_(a) > 1e-12 * largest ? 1.0 / inverse_(a) : 0.0;
+  }
+
+  void operator()(std::vector<double>& w, std::vector<double>& coeff) const {
+    const std::vector<double> t = transposedProduct(c_, stride_, k_, w);
+    const Eigen::VectorXd c = basis_ * inverse_.cwiseProduct(basis_.transpose() * Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(k_)));
+    coeff.assign(c.data(), c.data() + k_);
+    addProduct(c_, stride_, coeff, -1.0, w);
+  }
+
+ private:
+  const std::vector<double>& c_;
+  std::size_t k_, stride_;
+  Eigen::MatrixXd basis_;
+  Eigen::VectorXd inverse_;
+};
+
+// Modified Gram-Schmidt of w against V[0..j] into column j of H, and V[j + 1] = w / |w|.
+void orthogonalize(std::vector<double>& w, std::vector<std::vector<double>>& V, std::vector<std::vector<double>>& H,
+                   std::size_t j) {
+  const std::size_t n = w.size();
+  for (std::size_t i = 0; i <= j; ++i) {
+    double h = 0;
+    for (std::size_t q = 0; q < n; ++q) h += w[q] * V[i][q];
+    H[i][j] = h;
+    for (std::size_t q = 0; q < n; ++q) w[q] -= h * V[i][q];
+  }
+  H[j + 1][j] = norm(w);
+  if (H[j + 1][j] > 0)
+    for (std::size_t q = 0; q < n; ++q) V[j + 1][q] = w[q] / H[j + 1][j];
+}
+
+// Column j of H through the earlier Givens rotations and a new one that zeroes H[j + 1][j]; g follows.
+void rotate(std::vector<std::vector<double>>& H, std::vector<double>& cs, std::vector<double>& sn, std::vector<double>& g,
+            std::size_t j) {
+  for (std::size_t i = 0; i < j; ++i) {
+    const double h = cs[i] * H[i][j] + sn[i] * H[i + 1][j];
+    H[i + 1][j] = -sn[i] * H[i][j] + cs[i] * H[i + 1][j];
+    H[i][j] = h;
+  }
+  const double d = std::hypot(H[j][j], H[j + 1][j]);
+  cs[j] = d > 0 ? H[j][j] / d : 1.0;
+  sn[j] = d > 0 ? H[j + 1][j] / d : 0.0;
+  H[j][j] = d;
+  H[j + 1][j] = 0;
+  g[j + 1] = -sn[j] * g[j];
+  g[j] = cs[j] * g[j];
+}
+
+// y with H y = g, H upper triangular of size j.
+std::vector<double> backSubstitute(const std::vector<std::vector<double>>& H, const std::vector<double>& g, std::size_t j) {
+  std::vector<double> y(j);
+  for (std::size_t i = j; i-- > 0;) {
+    double s = g[i];
+    for (std::size_t q = i + 1; q < j; ++q) s -= H[i][q] * y[q];
+    y[i] = s / H[i][i];
+  }
+  return y;
+}
+
+}  // namespace
+
 GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::span<const double> b,
                   std::span<double> x, double tol, int maxIterations, int restart, RecycledDirections* recycled) {
   const std::size_t n = b.size(), m = static_cast<std::size_t>(restart);
@@ -120,27 +199,7 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
   RecycledDirections& kept = recycled ? *recycled : none;
   kept.reserve(n);
   const std::size_t k = kept.count_, stride = kept.capacity_;
-
-  // Least squares on the kept C through its Gram matrix, with directions the others repeat (eigenvalues below
-  // 1e-12 of the largest) left out: coeff = G^+ C^T w, and w loses its part in range(C).
-  Eigen::MatrixXd basis;
-  Eigen::VectorXd inverse;
-  if (k > 0) {
-    Eigen::MatrixXd G(k, k);
-    for (std::size_t a = 0; a < k; ++a)
-      for (std::size_t c = 0; c < k; ++c) G(a, c) = kept.gram_[a * stride + c];
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
-    basis = eig.eigenvectors();
-    inverse = eig.eigenvalues();
-    const double largest = inverse.maxCoeff();
-    for (Eigen::Index a = 0; a < inverse.size(); ++a) inverse(a) = inverse(a) > 1e-12 * largest ? 1.0 / inverse(a) : 0.0;
-  }
-  const auto project = [&](std::vector<double>& w, std::vector<double>& coeff) {
-    const std::vector<double> t = transposedProduct(kept.c_, stride, k, w);
-    const Eigen::VectorXd c = basis * inverse.cwiseProduct(basis.transpose() * Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(k)));
-    coeff.assign(c.data(), c.data() + k);
-    addProduct(kept.c_, stride, coeff, -1.0, w);
-  };
+  const RangeProjection project(kept.c_, kept.gram_, k, stride);
 
   // The Krylov vectors are allocated as the iterations reach them: a solve here takes a few iterations of the
   // 40 a restart allows, and 81 vectors of 266k unknowns (172 MB) would raise the run's peak memory.
@@ -152,14 +211,14 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
     for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
     return norm(r);
   };
+  const auto converged = [&](double beta) {
+    result.relativeResidual = beta / bnorm;
+    return result.converged = result.relativeResidual <= tol;
+  };
 
   while (result.iterations < maxIterations) {
     double beta = residual();
-    result.relativeResidual = beta / bnorm;
-    if (result.relativeResidual <= tol) {
-      result.converged = true;
-      break;
-    }
+    if (converged(beta)) break;
     if (k > 0) {
       project(r, coeff);
       addProduct(kept.z_, stride, coeff, 1.0, x);
@@ -167,11 +226,7 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
       // The kept directions alone may do: then check the true residual.
       if (beta / bnorm <= tol) {
         beta = residual();
-        result.relativeResidual = beta / bnorm;
-        if (result.relativeResidual <= tol) {
-          result.converged = true;
-          break;
-        }
+        if (converged(beta)) break;
       }
     }
     for (std::size_t i = 0; i < n; ++i) V[0][i] = r[i] / beta;
@@ -189,39 +244,15 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
       kept.stage(Z[j], w);
       // A (z_j - Z_kept B_j) = w - C B_j: the Krylov vectors stay orthogonal to range(C).
       if (k > 0) project(w, B[j]);
-      for (std::size_t i = 0; i <= j; ++i) {  // modified Gram-Schmidt
-        double h = 0;
-        for (std::size_t q = 0; q < n; ++q) h += w[q] * V[i][q];
-        H[i][j] = h;
-        for (std::size_t q = 0; q < n; ++q) w[q] -= h * V[i][q];
-      }
-      H[j + 1][j] = norm(w);
-      if (H[j + 1][j] > 0)
-        for (std::size_t q = 0; q < n; ++q) V[j + 1][q] = w[q] / H[j + 1][j];
-      for (std::size_t i = 0; i < j; ++i) {  // the earlier Givens rotations
-        const double h = cs[i] * H[i][j] + sn[i] * H[i + 1][j];
-        H[i + 1][j] = -sn[i] * H[i][j] + cs[i] * H[i + 1][j];
-        H[i][j] = h;
-      }
-      const double d = std::hypot(H[j][j], H[j + 1][j]);
-      cs[j] = d > 0 ? H[j][j] / d : 1.0;
-      sn[j] = d > 0 ? H[j + 1][j] / d : 0.0;
-      H[j][j] = d;
-      H[j + 1][j] = 0;
-      g[j + 1] = -sn[j] * g[j];
-      g[j] = cs[j] * g[j];
+      orthogonalize(w, V, H, j);
+      rotate(H, cs, sn, g, j);
       if (std::abs(g[j + 1]) / bnorm <= tol) {
         ++j;
         break;
       }
     }
-    // x += sum_j y_j (z_j - Z_kept B_j) with H y = g (upper triangular, size j)
-    std::vector<double> y(j);
-    for (std::size_t i = j; i-- > 0;) {
-      double s = g[i];
-      for (std::size_t q = i + 1; q < j; ++q) s -= H[i][q] * y[q];
-      y[i] = s / H[i][i];
-    }
+    // x += sum_j y_j (z_j - Z_kept B_j)
+    const std::vector<double> y = backSubstitute(H, g, j);
     for (std::size_t i = 0; i < j; ++i)
       for (std::size_t q = 0; q < n; ++q) x[q] += y[i] * Z[i][q];
     if (k > 0) {
@@ -231,10 +262,7 @@ GmresResult gmres(const VectorMap& apply, const VectorMap& precondition, std::sp
       addProduct(kept.z_, stride, d, -1.0, x);
     }
   }
-  if (!result.converged) {
-    result.relativeResidual = residual() / bnorm;
-    result.converged = result.relativeResidual <= tol;
-  }
+  if (!result.converged) converged(residual());
   kept.commit();
   return result;
 }

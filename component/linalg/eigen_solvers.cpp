@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
-#include "solvers/linear_solver.hpp"
+#include "linalg/linear_solver.hpp"
 
 namespace peristep {
 namespace {

@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "core/csr_matrix.hpp"
+#include "geometry/dof_map.hpp"
 #include "geometry/neighbours.hpp"
-#include "models/lps_system.hpp"
-#include "solvers/dense_row_update_solver.hpp"
-#include "solvers/gmres.hpp"
-#include "solvers/patch_correction.hpp"
-#include "solvers/schur_factorization.hpp"
+#include "linalg/dense_row_update_solver.hpp"
+#include "linalg/gmres.hpp"
+#include "linalg/patch_correction.hpp"
+#include "linalg/schur_factorization.hpp"
 
 namespace peristep {
 
@@ -62,7 +62,7 @@ class CrackZoneSolver {
 
   // A x = b when rows outside the core changed too: GMRES on the scaled system D A D, preconditioned by
   // the zone solver (exact up to those rows) with a local correction around those rows
-  // (solvers/patch_correction.hpp), from x; stops at relative residual tol. x is left as it was
+  // (linalg/patch_correction.hpp), from x; stops at relative residual tol. x is left as it was
   // when the iteration became non-finite. With `recycle`, the directions of earlier such solves since the last
   // factorize() or forgetDirections() are searched first and this solve's join them.
   GmresResult solveIterative(const CsrMatrix& A, std::span<const double> b, std::span<double> x, double tol,

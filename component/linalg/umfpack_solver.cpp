@@ -9,8 +9,8 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "solvers/linear_solver.hpp"
-#include "solvers/metis_ordering.hpp"
+#include "linalg/linear_solver.hpp"
+#include "linalg/metis_ordering.hpp"
 
 namespace peristep {
 namespace {

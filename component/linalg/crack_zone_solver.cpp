@@ -1,4 +1,4 @@
-#include "solvers/crack_zone_solver.hpp"
+#include "linalg/crack_zone_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "core/errors.hpp"
 #include "core/memory.hpp"
-#include "solvers/metis_ordering.hpp"
+#include "linalg/metis_ordering.hpp"
 
 namespace peristep {
 namespace {

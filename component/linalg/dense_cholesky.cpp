@@ -1,4 +1,4 @@
-#include "solvers/dense_cholesky.hpp"
+#include "linalg/dense_cholesky.hpp"
 
 #include <algorithm>
 #include <cmath>

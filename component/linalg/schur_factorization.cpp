@@ -1,4 +1,4 @@
-#include "solvers/schur_factorization.hpp"
+#include "linalg/schur_factorization.hpp"
 
 #include <dmumps_c.h>
 #include <sys/mman.h>
@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
-#include "solvers/multifrontal_lu.hpp"
+#include "linalg/multifrontal_lu.hpp"
 
 namespace peristep {
 
@@ -238,7 +238,7 @@ class Mumps final : public SchurFactorization::Backend {
   std::int64_t workspaceEstimate_ = 0;  // MUMPS' estimate of S after the analysis, entries
 };
 
-// Single precision: the project's own multifrontal LU (solvers/multifrontal_lu.hpp), whose substitutions read
+// Single precision: the project's own multifrontal LU (linalg/multifrontal_lu.hpp), whose substitutions read
 // the factors at the memory bound; MUMPS' own single-precision solves read them at a third of it
 // (docs/decisions/0001-own-single-precision-lu.md).
 class OwnFrontal final : public SchurFactorization::Backend {

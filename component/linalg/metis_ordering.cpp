@@ -1,4 +1,4 @@
-#include "solvers/metis_ordering.hpp"
+#include "linalg/metis_ordering.hpp"
 
 #include <metis.h>
 

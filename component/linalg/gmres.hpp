@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/csr_matrix.hpp"
-#include "solvers/linear_solver.hpp"
+#include "linalg/linear_solver.hpp"
 
 namespace peristep {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Which sparse solver a quasi-static scene uses (solvers/linear_solver.hpp), carried as this one value from
+// Which sparse solver a quasi-static scene uses (linalg/linear_solver.hpp), carried as this one value from
 // the FMI variable linearSolver to the factory.
 #include <array>
 #include <string>

@@ -1,4 +1,6 @@
-#include "solvers/dense_row_update_solver.hpp"
+#include "linalg/dense_row_update_solver.hpp"
+
+#include <lapack.h>
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +8,6 @@
 #include "core/errors.hpp"
 #include "core/memory.hpp"
 
-extern "C" {
-void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
-void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
-             double* b, const int* ldb, int* info, std::size_t transLength);
-}
 
 namespace peristep {
 namespace {
@@ -19,7 +16,7 @@ void luFactorize(std::vector<double>& a, std::vector<int>& pivots, std::size_t n
   const int m = static_cast<int>(n);
   pivots.resize(n);
   int info = 0;
-  dgetrf_(&m, &m, a.data(), &m, pivots.data(), &info);
+  LAPACK_dgetrf(&m, &m, a.data(), &m, pivots.data(), &info);
   if (info != 0) throw SolverFailure("dense LU of the crack zone failed (info " + std::to_string(info) + ")");
 }
 
@@ -84,7 +81,7 @@ void DenseRowUpdateSolver::luSolve(const std::vector<double>& lu, const std::vec
                                    double* b, int nrhs) const {
   const int m = static_cast<int>(n);
   int info = 0;
-  dgetrs_("N", &m, &nrhs, lu.data(), &m, pivots.data(), b, &m, &info, 1);
+  LAPACK_dgetrs("N", &m, &nrhs, lu.data(), &m, pivots.data(), b, &m, &info);
   if (info != 0) throw SolverFailure("dense triangular solve failed");
 }
 

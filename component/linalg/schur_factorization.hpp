@@ -13,9 +13,9 @@
 namespace peristep {
 
 // Precision of the sparse factors: double (MUMPS' dmumps, sequential, with threshold pivoting) or single (the
-// project's multifrontal LU without pivoting, solvers/multifrontal_lu.hpp). The interface is double either way: A, S and
+// project's multifrontal LU without pivoting, linalg/multifrontal_lu.hpp). The interface is double either way: A, S and
 // the vectors are converted at the boundary, so single-precision factors give an approximate solve that
-// the caller refines in double (solvers/crack_zone_solver.hpp).
+// the caller refines in double (linalg/crack_zone_solver.hpp).
 enum class FactorPrecision { Double, Single };
 
 class SchurFactorization {

@@ -1,0 +1,3 @@
+#pragma once
+// A geometry header that reaches up into scenes/: the layering check must refuse it.
+#include "scenes/spec.hpp"

@@ -1,0 +1,2 @@
+#pragma once
+// Stands for a scene header (the layering test's fixture).
