@@ -60,22 +60,13 @@ Projection project(StaticResidual& res, const Model& m) {
 
 double stepOf(double v) { return 1e-6 * std::max(1.0, std::abs(v)); }
 
-}  // namespace
-
-KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
-  const int P = res.order();
-  const Eigen::Index nb = P + 1;
-  Eigen::VectorXd beta(nb);
-  for (int i = 0; i < P; ++i) beta[i] = o.nonnegative ? 1.0 : 1.0 / (P + 1);  // all xi equal
-  beta[P] = o.alpha0;
-  const auto modelOf = [&](const StaticResidual& r, const Eigen::VectorXd& b) {
-    return kernelModel(r, b, o.nonnegative);
-  };
-
-  KernelFit fit;
+// Levenberg-Marquardt on the projected residual over beta (variable projection: (lambda, mu) solved for each
+// beta), from beta; on return beta is the minimizer and cur its projection. Counts into fit.
+Projection minimizeProjected(StaticResidual& res, const KernelFitOptions& o, Eigen::VectorXd& beta, KernelFit& fit) {
+  const Eigen::Index nb = beta.size(), P = nb - 1;
   const auto evaluate = [&](const Eigen::VectorXd& b) {
     ++fit.evaluations;
-    return project(res, modelOf(res, b));
+    return project(res, kernelModel(res, b, o.nonnegative));
   };
   Projection cur = evaluate(beta);
   double f = cur.r.squaredNorm(), damping = 1e-3;
@@ -117,17 +108,16 @@ KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
       break;
     }
   }
+  return cur;
+}
 
-  const Model m = modelOf(res, beta);
-  fit.kernel = BernsteinKernel{res.delta(), m.alpha, m.D};
-  fit.lambda = cur.x[0];
-  fit.mu = cur.x[1];
-  fit.rss = f;
-  const double bb = Eigen::Map<const Eigen::VectorXd>(res.rhs().data(), cur.r.size()).squaredNorm();
-  fit.relativeResidual = std::sqrt(f / bb);
-
-  // Covariance of theta = (lambda, mu, beta) from the full (unprojected) residual r = rhs - C(beta) (lambda, mu).
-  const Eigen::Index np = 2 + nb;
+// The standard errors of lambda, mu, D_k and alpha at the minimizer: the covariance of theta = (lambda, mu,
+// beta) from the full (unprojected) residual r = rhs - C(beta) (lambda, mu), carried to the reported
+// quantities by the delta method.
+void setStandardErrors(StaticResidual& res, bool nonnegative, const Eigen::VectorXd& beta, const Projection& cur,
+                       KernelFit& fit) {
+  const Eigen::Index nb = beta.size(), np = 2 + nb;
+  const int P = static_cast<int>(nb) - 1;
   Eigen::MatrixXd J(cur.r.size(), np);
   J.col(0) = -cur.C.col(0);
   J.col(1) = -cur.C.col(1);
@@ -136,13 +126,13 @@ KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
     const double h = stepOf(beta[i]);
     bp[i] += h;
     bm[i] -= h;
-    J.col(2 + i) = -(columnsOf(res, modelOf(res, bp)) - columnsOf(res, modelOf(res, bm))) * cur.x / (2 * h);
+    J.col(2 + i) = -(columnsOf(res, kernelModel(res, bp, nonnegative)) - columnsOf(res, kernelModel(res, bm, nonnegative))) *
+                   cur.x / (2 * h);
   }
-  fit.sigma2 = f / static_cast<double>(std::max<Eigen::Index>(1, cur.r.size() - np));
+  fit.sigma2 = fit.rss / static_cast<double>(std::max<Eigen::Index>(1, cur.r.size() - np));
   const Eigen::MatrixXd cov = fit.sigma2 * (J.transpose() * J).ldlt().solve(Eigen::MatrixXd::Identity(np, np));
-  // Reported quantities q = (lambda, mu, D_0..D_P, alpha) as functions of theta: delta method.
-  const auto reported = [&](const Eigen::VectorXd& theta) {
-    const Model mm = modelOf(res, theta.tail(nb));
+  const auto reported = [&](const Eigen::VectorXd& theta) {  // q = (lambda, mu, D_0..D_P, alpha)
+    const Model mm = kernelModel(res, theta.tail(nb), nonnegative);
     Eigen::VectorXd q(P + 4);
     q[0] = theta[0];
     q[1] = theta[1];
@@ -165,6 +155,25 @@ KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
   fit.muError = std::sqrt(var[1]);
   for (int k = 0; k <= P; ++k) fit.DError.push_back(std::sqrt(var[2 + k]));
   fit.alphaError = std::sqrt(var[P + 3]);
+}
+
+}  // namespace
+
+KernelFit fitKernel(StaticResidual& res, const KernelFitOptions& o) {
+  const int P = res.order();
+  Eigen::VectorXd beta(P + 1);
+  for (int i = 0; i < P; ++i) beta[i] = o.nonnegative ? 1.0 : 1.0 / (P + 1);  // all xi equal
+  beta[P] = o.alpha0;
+  KernelFit fit;
+  const Projection cur = minimizeProjected(res, o, beta, fit);
+  const Model m = kernelModel(res, beta, o.nonnegative);
+  fit.kernel = BernsteinKernel{res.delta(), m.alpha, m.D};
+  fit.lambda = cur.x[0];
+  fit.mu = cur.x[1];
+  fit.rss = cur.r.squaredNorm();
+  const double bb = Eigen::Map<const Eigen::VectorXd>(res.rhs().data(), cur.r.size()).squaredNorm();
+  fit.relativeResidual = std::sqrt(fit.rss / bb);
+  setStandardErrors(res, o.nonnegative, beta, cur, fit);
   return fit;
 }
 
