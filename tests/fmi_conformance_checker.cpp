@@ -134,6 +134,8 @@ const std::set<std::string> kDimensionless{
     "learnedCriticalStretch",       // a stretch
     "predictionErrorDisplacement",  // relative error
     "predictionErrorDamage",        // relative error
+    "strainXX", "strainYY", "strainXY",  // patchTest: a displacement gradient
+    "patchError",                   // relative error
 };
 
 class Checker {

@@ -59,6 +59,11 @@ TEST_CASE("the committed docs/variables.md is the generated variable reference",
   CHECK(readFile(PERISTEP_COMMITTED_VARIABLE_REFERENCE) == readFile(PERISTEP_GENERATED_VARIABLE_REFERENCE));
 }
 
+TEST_CASE("the committed api/peristep.h is the generated one", "[modelDescription]") {
+  INFO("regenerate it: cp <build>/peristep.h api/peristep.h");
+  CHECK(readFile(PERISTEP_COMMITTED_API_HEADER) == readFile(PERISTEP_GENERATED_API_HEADER));
+}
+
 TEST_CASE("modelDescription.xml names its author, copyright, licence, tool and date", "[modelDescription]") {
   const XmlDocument doc(PERISTEP_GENERATED_MODEL_DESCRIPTION);
   for (const char* name : {"author", "copyright", "license", "generationTool", "version"}) {

@@ -115,6 +115,7 @@ TEST_CASE("every output lists the inputs it depends on in every scene", "[modelD
       {"specimen", PERISTEP_SCENE_SPECIMEN, 0.25, PERISTEP_VR_LOAD_FACTOR},
       {"gamutBar", PERISTEP_SCENE_GAMUT_BAR, 0.25, PERISTEP_VR_LOAD_FACTOR},
       {"learnedFracture", PERISTEP_SCENE_LEARNED_FRACTURE, 4.95e-14, PERISTEP_VR_TIME},  // driven by its frames
+      {"patchTest", PERISTEP_SCENE_PATCH_TEST, 0.25, PERISTEP_VR_LOAD_FACTOR},
   };
   for (const Scene& scene : scenes) {
     const auto base = run(scene, kBase, all);

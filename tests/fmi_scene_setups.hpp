@@ -31,6 +31,7 @@ inline void setUpCoarseScene(Session& s, std::int64_t scene) {
     case PERISTEP_SCENE_COMPOSITE:
     case PERISTEP_SCENE_INTERFACE_CRACK:
     case PERISTEP_SCENE_KL_PLATE: grid(9, 9, 2); return;
+    case PERISTEP_SCENE_PATCH_TEST: grid(9, 9, 1); return;
     case PERISTEP_SCENE_SPECIMEN: grid(9, 9, 1); return;  // the start values: a glass plate pulled at the top
     case PERISTEP_SCENE_GLASS_CERAMIC:  // pure glass, which breaks from an opening of about 0.15 um
       grid(51, 26, 1);

@@ -67,5 +67,5 @@ TEST_CASE("every scene: a restored FMU state repeats the following steps bit for
     CHECK(fresh.log.errors() == 0);
     ++tested;
   }
-  CHECK(tested == 11);
+  CHECK(tested >= 11);  // the eleven scenes of the papers and any added since
 }

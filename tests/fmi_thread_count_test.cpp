@@ -62,7 +62,7 @@ TEST_CASE("every scene: one thread and two give the same bits", "[abi][threads][
     ++tested;
   }
   omp_set_num_threads(threads);
-  CHECK(tested == 11);
+  CHECK(tested >= 11);  // the eleven scenes of the papers and any added since
 }
 
 // Grids large enough for several blocks of the fixed-block sums (2 x 65 x 65 unknowns) and for the KL

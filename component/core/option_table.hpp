@@ -2,7 +2,7 @@
 // One table per option (linear solver, time integrator, ...): the C++ value that selects the code, the one
 // name every interface spells it with (FMI enumeration item, scene file, command line) and a description.
 // It is defined once, beside the code it selects; the FMI layer maps its enumeration values onto the C++
-// values (fmi/enumerations.hpp) and takes names and descriptions from here.
+// values (scenes/enumeration_values.hpp) and takes names and descriptions from here.
 #include <algorithm>
 #include <array>
 #include <cstddef>

@@ -8,9 +8,11 @@
 #include "core/errors.hpp"
 #include "core/memory.hpp"
 #include "core/number_text.hpp"
-#include "fmi/enumerations.hpp"
+#include "fmi/variables.hpp"
 #include "peristep.h"
+#include "scenes/enumeration_values.hpp"
 #include "scenes/parameter_constants.hpp"
+#include "scenes/scene_declaration.hpp"
 
 namespace peristep::fmi {
 
@@ -45,6 +47,31 @@ void gripReaction(P, M m, std::span<double> out) {
 }
 
 std::vector<double> copied(std::span<const double> v) { return {v.begin(), v.end()}; }
+
+// A scene's own parameter in double precision (integers and enumeration values are exact below 2^53).
+std::vector<double> asDoubles(const ParameterValues& v, const Variable& own) {
+  const auto convert = [](auto values) { return std::vector<double>(values.begin(), values.end()); };
+  switch (own.type) {
+    case VarType::Float64: return convert(v.get<double>(own.vr));
+    case VarType::Int32: return convert(v.get<std::int32_t>(own.vr));
+    case VarType::UInt64: return convert(v.get<std::uint64_t>(own.vr));
+    case VarType::Enumeration: return convert(v.get<std::int64_t>(own.vr));
+  }
+  return {};
+}
+
+// Every scene's own outputs, read through SceneModel::ownOutput (0 while another scene runs).
+std::vector<ComputedVariable> ownOutputs() {
+  std::vector<ComputedVariable> computed;
+  for (const SceneDeclaration& scene : sceneDeclarations())
+    for (const OwnOutput& o : scene.outputs)
+      computed.push_back({o.vr, Needs::Solution,
+                          [vr = o.vr](const ParameterValues&, const SceneModel* m, std::span<double> out) {
+                            out[0] = m->ownOutput(vr);
+                          }});
+  return computed;
+}
+
 // A map of zeros is none: the scene then carries no array for it.
 std::vector<double> nonZero(std::span<const double> v) {
   return std::all_of(v.begin(), v.end(), [](double x) { return x == 0; }) ? std::vector<double>{} : copied(v);
@@ -108,21 +135,7 @@ SpecimenSpec specimen(const ParameterValues& v) {
   return s;
 }
 
-// The bar of 002 (scene gamutBar): the enumerations' values are checked when they are set.
-GamutBarSpec gamutBar(const ParameterValues& v) {
-  GamutBarSpec s;
-  s.material = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_MATERIAL) == PERISTEP_GAMUT_MATERIAL_2 ? gamutMaterial2()
-                                                                                              : gamutMaterial1();
-  s.gridJitter = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_GRID) == PERISTEP_GAMUT_GRID_STOCHASTIC ? kStochasticGridJitter
-                                                                                                 : 0.0;  // 002:(36)
-  const std::uint64_t bonds = v.scalar<std::uint64_t>(PERISTEP_VR_GAMUT_BONDS);
-  s.bonds = static_cast<int>(std::min<std::uint64_t>(bonds, std::numeric_limits<int>::max()));
-  s.scatter.denominator = v.scalar<double>(PERISTEP_VR_SCATTER_DENOMINATOR);
-  s.scatter.weibullShape = v.scalar<double>(PERISTEP_VR_WEIBULL_SHAPE);
-  return s;
-}
-
-const std::array<ComputedVariable, 40> kComputed{{
+const std::array<ComputedVariable, 34> kComputed{{
     {PERISTEP_VR_XI_DISTRIBUTION, Needs::Parameters, nullptr,
      [](P p, M, std::span<std::int32_t> out) {
        const SceneParameters s = sceneParameters(p);
@@ -171,23 +184,13 @@ const std::array<ComputedVariable, 40> kComputed{{
     {PERISTEP_VR_REACTION_TOP_Y, Needs::Solution, gripReaction<Side::Top, 1>},
     {PERISTEP_VR_GRIP_BOX_REACTION_X, Needs::Solution, boxReactions<0>},
     {PERISTEP_VR_GRIP_BOX_REACTION_Y, Needs::Solution, boxReactions<1>},
-    {PERISTEP_VR_BAR_STRESS, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->barStress(); }},
-    {PERISTEP_VR_BAR_STRAIN, Needs::Solution, [](P, M m, std::span<double> out) { out[0] = m->barStrain(); }},
-    {PERISTEP_VR_CYCLIC_EXPONENT, Needs::Solution,
-     [](P, M m, std::span<double> out) { out[0] = m->cyclicExponent(); }},
-    {PERISTEP_VR_CYCLIC_COEFFICIENT, Needs::Solution,
-     [](P, M m, std::span<double> out) { out[0] = m->cyclicCoefficient(); }},
-    {PERISTEP_VR_PREDICTION_ERROR_U, Needs::Solution,
-     [](P, M m, std::span<double> out) { out[0] = m->predictionErrorDisplacement(); }},
-    {PERISTEP_VR_PREDICTION_ERROR_DAMAGE, Needs::Solution,
-     [](P, M m, std::span<double> out) { out[0] = m->predictionErrorDamage(); }},
 }};
 
 }  // namespace
 
 SceneParameters sceneParameters(const ParameterValues& v) {
   SceneParameters p;
-  p.scene = kindOf(kSceneValues, v.scalar<std::int64_t>(PERISTEP_VR_SCENE), "scene");
+  p.scene = static_cast<SceneId>(v.scalar<std::int64_t>(PERISTEP_VR_SCENE));  // an item of the registry
   p.grid.nx = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_NX));
   p.grid.ny = static_cast<std::size_t>(v.scalar<std::uint64_t>(PERISTEP_VR_NY));
   p.grid.Lx = v.scalar<double>(PERISTEP_VR_LX);
@@ -218,14 +221,11 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   p.criticalEnergyReleaseRate = v.scalar<double>(PERISTEP_VR_CRITICAL_ENERGY_RELEASE_RATE);
   p.density = v.scalar<double>(PERISTEP_VR_DENSITY);
   if (p.scene == SceneId::Specimen) p.specimen = specimen(v);
-  if (p.scene == SceneId::LearnedFracture) {
-    p.learnedSample = kindOf(kLearnedSampleValues, v.scalar<std::int64_t>(PERISTEP_VR_LEARNED_SAMPLE), "learned sample");
-    p.learnedCriticalStretch = v.scalar<double>(PERISTEP_VR_LEARNED_CRITICAL_STRETCH);
-  }
-  if (p.scene == SceneId::GamutBar) {
-    p.gamutBar = gamutBar(v);
-    p.gamutCyclic = v.scalar<std::int64_t>(PERISTEP_VR_GAMUT_PROTOCOL) == PERISTEP_GAMUT_CYCLIC;
-  }
+  const SceneDeclaration* scene = findScene(p.scene);
+  if (!scene) throw InvalidInput("unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
+  for (const Variable& own : scene->variables)
+    if (settable(own)) p.own[own.vr] = asDoubles(v, own);
+  if (scene->configure) scene->configure(p);
   // memoryBudget 0: 3/4 of what the process can use, leaving room for the importer and other instances.
   const auto budget = v.scalar<std::uint64_t>(PERISTEP_VR_MEMORY_BUDGET);
   p.limits.memoryBytes = budget > 0 ? static_cast<double>(budget) : 0.75 * static_cast<double>(usableMemoryBytes());
@@ -234,9 +234,23 @@ SceneParameters sceneParameters(const ParameterValues& v) {
   return p;
 }
 
+namespace {
+
+// The computed variables of the shared table and of every scene's own outputs.
+const std::vector<ComputedVariable>& computedVariables() {
+  static const std::vector<ComputedVariable> all = [] {
+    std::vector<ComputedVariable> c(kComputed.begin(), kComputed.end());
+    for (ComputedVariable& o : ownOutputs()) c.push_back(std::move(o));
+    return c;
+  }();
+  return all;
+}
+
+}  // namespace
+
 std::string firstNonFinite(const ParameterValues& values, const SceneModel& model, Needs needs) {
   std::vector<double> buffer;
-  for (const ComputedVariable& c : kComputed) {
+  for (const ComputedVariable& c : computedVariables()) {
     if (c.needs != needs || !c.readFloat64 || c.onRequest) continue;
     const Variable& v = *findVariable(c.vr);
     buffer.resize(values.size(v));
@@ -250,8 +264,9 @@ std::string firstNonFinite(const ParameterValues& values, const SceneModel& mode
 }
 
 const ComputedVariable* findComputed(fmi3ValueReference vr) {
-  const auto it = std::find_if(kComputed.begin(), kComputed.end(), [vr](const auto& c) { return c.vr == vr; });
-  return it == kComputed.end() ? nullptr : &*it;
+  const auto& all = computedVariables();
+  const auto it = std::find_if(all.begin(), all.end(), [vr](const auto& c) { return c.vr == vr; });
+  return it == all.end() ? nullptr : &*it;
 }
 
 }  // namespace peristep::fmi

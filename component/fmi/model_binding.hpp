@@ -1,8 +1,9 @@
 #pragma once
-// Maps PeriStep's variables onto the solver library, the only file of the FMI layer that knows
-// both: the SceneParameters a SceneModel is built from, and where every calculated parameter and
-// output is read from.
+// Maps PeriStep's variables onto the scenes, the only file of the FMI layer that knows both: the
+// SceneParameters a SceneModel is built from, and where every calculated parameter and output is read
+// from (a scene's own parameters and outputs through its declaration, scenes/scene_declaration.hpp).
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 
@@ -21,8 +22,8 @@ struct ComputedVariable {
   Needs needs;
   // The reader of the variable's type; writes every element (`model` is null only when needs is
   // Parameters).
-  void (*readFloat64)(const ParameterValues&, const SceneModel*, std::span<double>) = nullptr;
-  void (*readInt32)(const ParameterValues&, const SceneModel*, std::span<std::int32_t>) = nullptr;
+  std::function<void(const ParameterValues&, const SceneModel*, std::span<double>)> readFloat64 = nullptr;
+  std::function<void(const ParameterValues&, const SceneModel*, std::span<std::int32_t>)> readInt32 = nullptr;
   // Costly, computed on the first read (the exact moments): checked when read, not after every step.
   bool onRequest = false;
 };

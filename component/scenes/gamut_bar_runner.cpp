@@ -7,14 +7,18 @@
 // The bar is not on the plate grid: the image outputs ([ny][nx]) are zero. An FMU state holds the forces
 // stepped to; restoring replays them on a fresh solver, which is deterministic, so a restored state
 // continues bit for bit without serializing the solver's factors and active sets.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <numeric>
 
 #include "core/byte_stream.hpp"
+#include "geometry/bar_grid.hpp"
 #include "scenes/cyclic_fit.hpp"
 #include "scenes/gamut_loading.hpp"
+#include "scenes/scene_declaration.hpp"
+#include "scenes/shared_variables.hpp"
 #include "scenes/scene_runner.hpp"
 #include "solvers/gamut_bar_solver.hpp"
 
@@ -78,10 +82,10 @@ class GamutBarRunner final : public Runner {
   }
 
   double brokenBonds() const override { return static_cast<double>(last_.brokenBonds); }
-  double barStress() const override { return last_.stress; }
-  double barStrain() const override { return last_.strain; }
-  double cyclicExponent() const override { return fit_.exponent; }
-  double cyclicCoefficient() const override { return fit_.coefficient; }
+  double stress() const { return last_.stress; }
+  double strain() const { return last_.strain; }
+  double cyclicExponent() const { return fit_.exponent; }
+  double cyclicCoefficient() const { return fit_.coefficient; }
 
   std::vector<std::uint8_t> saveState() const override {
     ByteWriter w;
@@ -135,8 +139,114 @@ class GamutBarRunner final : public Runner {
   CyclicFit fit_;
 };
 
+using C = Causality;
+using V = Variability;
+using I = Initial;
+using T = VarType;
+constexpr ValueReference kMaterial = 110, kGrid = 111, kBonds = 112, kScatterDenominator = 113, kWeibullShape = 114,
+                         kProtocol = 115, kStress = 120, kStrain = 121, kCyclicExponent = 122,
+                         kCyclicCoefficient = 123;
+
+std::vector<ValueReference> onLoadFactor() { return {shared_vr::loadFactor}; }
+std::vector<ValueReference> onNoInput() { return {}; }
+
+const GamutBarRunner& bar(const Runner& r) { return static_cast<const GamutBarRunner&>(r); }
+
+// The bar's spec from its parameters (the enumerations' values are checked when they are set).
+void configure(SceneParameters& p) {
+  GamutBarSpec& s = p.gamutBar;
+  s.material = ownValue(p, kMaterial) == 2 ? gamutMaterial2() : gamutMaterial1();
+  s.gridJitter = ownValue(p, kGrid) == 2 ? kStochasticGridJitter : 0.0;  // 002:(36)
+  s.bonds = static_cast<int>(std::min(ownValue(p, kBonds), double(std::numeric_limits<int>::max())));
+  s.scatter.denominator = ownValue(p, kScatterDenominator);
+  s.scatter.weibullShape = ownValue(p, kWeibullShape);
+  p.gamutCyclic = ownValue(p, kProtocol) == 2;
+}
+
 }  // namespace
 
-std::unique_ptr<Runner> makeGamutBarRunner(const SceneParameters& p) { return std::make_unique<GamutBarRunner>(p); }
+SceneDeclaration gamutBarScene() {
+  return {
+      .id = SceneId::GamutBar,
+      .name = "gamutBar",
+      .description =
+          "1D stochastic deformation-gamut bar (Desai, paper 002 Sec. 4): realization seed of gamutBonds bonds, "
+          "gamutMaterial, gamutGrid, scatter of 002:(26); fixed at x = 0, pulled at x = L. gamutProtocol "
+          "monotonic: every step moves the end stress to loadFactor * sigma_f; cyclic: every step of any size "
+          "takes the next of the protocol's 53 force steps, and cyclicExponent, cyclicCoefficient hold n', K' "
+          "after the 53rd; quasi-static, no image outputs",
+      .variables = {
+    {.name = "gamutMaterial", .vr = kMaterial, .type = T::Enumeration,
+     .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+     .description = "gamutBar scene: the Ramberg-Osgood material of 002 Sec. 4.2",
+     .declaredType = "PeriStep.GamutMaterial", .start = "1"},
+    {.name = "gamutGrid", .vr = kGrid, .type = T::Enumeration, .causality = C::Parameter,
+     .variability = V::Fixed, .initial = I::Exact, .description = "gamutBar scene: the grid of the bar's points",
+     .declaredType = "PeriStep.GamutGrid", .start = "1"},
+    {.name = "gamutBonds", .vr = kBonds, .type = T::UInt64, .causality = C::Parameter,
+     .variability = V::Fixed, .initial = I::Exact,
+     .description = "gamutBar scene: local bonds of the bar (bonds + 1 points, every pair interacting), >= 4",
+     .start = "500", .min = Bound{4}, .max = Bound{20000}},
+    {.name = "scatterDenominator", .vr = kScatterDenominator, .type = T::Float64,
+     .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+     .description = "gamutBar scene: the denominator of 002:(26), M = Mbar (1 + sign W / denominator), W "
+                    "Weibull(1, weibullShape) per point and bond; 10: an RMS scatter of 10% at shape 2, > 0",
+     .start = "10", .min = Bound{0, true}},
+    {.name = "weibullShape", .vr = kWeibullShape, .type = T::Float64, .causality = C::Parameter,
+     .variability = V::Fixed, .initial = I::Exact,
+     .description = "gamutBar scene: shape of the Weibull draw W of 002:(26) (scale 1), > 0", .start = "2",
+     .min = Bound{0, true}},
+    {.name = "gamutProtocol", .vr = kProtocol, .type = T::Enumeration,
+     .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+     .description = "gamutBar scene: how the bar is loaded", .declaredType = "PeriStep.GamutProtocol",
+     .start = "1"},
+    {.name = "barStress", .vr = kStress, .type = T::Float64, .causality = C::Output,
+     .variability = V::Continuous, .initial = I::Calculated,
+     .description = "gamutBar scene: end force over area F / A after the last step; 0 otherwise", .unit = "Pa",
+     .dependencies = onLoadFactor()},
+    {.name = "barStrain", .vr = kStrain, .type = T::Float64, .causality = C::Output,
+     .variability = V::Continuous, .initial = I::Calculated,
+     .description = "gamutBar scene: end displacement over length u(L) / L after the last step; 0 otherwise",
+     .dependencies = onLoadFactor()},
+    {.name = "cyclicExponent", .vr = kCyclicExponent, .type = T::Float64, .causality = C::Output,
+     .variability = V::Continuous, .initial = I::Calculated,
+     .description = "gamutBar scene, cyclic protocol: n' of sigma_a = K' eps_pa^n' fitted to the stable loops "
+                    "(002 Sec. 4.4.3) once the protocol's last step is done; 0 before that, in monotonic "
+                    "loading and in the other scenes",
+     .dependencies = onNoInput()},
+    {.name = "cyclicCoefficient", .vr = kCyclicCoefficient, .type = T::Float64,
+     .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
+     .description = "gamutBar scene, cyclic protocol: K' of the same fit once the protocol's last step is done; 0 "
+                    "before that, in monotonic loading and in the other scenes",
+     .unit = "Pa", .dependencies = onNoInput()},
+      },
+      .enumerations = {
+    {"PeriStep.GamutMaterial",
+     "Ramberg-Osgood materials of paper 002 Sec. 4.2",
+     {{"material1", 1, "Material 1: E 71.6 GPa, sigma_y 538.6 MPa, sigma_f 665.8 MPa"},
+      {"material2", 2, "Material 2: E 115.7 GPa, sigma_y 867 MPa, sigma_f 933 MPa"}},
+     "PERISTEP_GAMUT_"},
+    {"PeriStep.GamutGrid",
+     "Grids of the gamutBar scene",
+     {{"uniform", 1, "Equally spaced points"},
+      {"stochastic", 2, "The stochastic grid of 002:(36)"}},
+     "PERISTEP_GAMUT_GRID_"},
+    {"PeriStep.GamutProtocol",
+     "Loading of the gamutBar scene",
+     {{"monotonic", 1, "Every step moves the end stress to loadFactor * sigma_f"},
+      {"cyclic", 2,
+       "Fully reversed stress-controlled cycles at 6 amplitudes from sigma_y to sigma_f, 4 steps per half "
+       "cycle (53 steps, the input unused); then n' and K'"}},
+     "PERISTEP_GAMUT_"},
+      },
+      .outputs = {{kStress, [](const Runner& r) { return bar(r).stress(); }},
+                  {kStrain, [](const Runner& r) { return bar(r).strain(); }},
+                  {kCyclicExponent, [](const Runner& r) { return bar(r).cyclicExponent(); }},
+                  {kCyclicCoefficient, [](const Runner& r) { return bar(r).cyclicCoefficient(); }}},
+      .configure = configure,
+      .validate = [](const SceneParameters&) {},  // the bar checks its own spec
+      .make = [](const SceneParameters& p) -> std::unique_ptr<Runner> { return std::make_unique<GamutBarRunner>(p); },
+  };
+}
 
 }  // namespace peristep

@@ -12,6 +12,7 @@
 #include "core/number_text.hpp"
 #include "learning/md_fracture_samples.hpp"
 #include "learning/model_units.hpp"
+#include "scenes/scene_declaration.hpp"
 #include "scenes/scene_runner.hpp"
 
 namespace peristep {
@@ -99,8 +100,8 @@ class LearnedFractureRunner final : public Runner {
     return std::vector<double>(cloud_.size(), 4 * m * (l + m) / (l + 2 * m) * kTPaPerEvA3 * 1e12);
   }
   std::vector<double> damage() const override { return case_.op.damage(stepper_.maxStretch(), case_.setup.s0); }
-  double predictionErrorDisplacement() const override { return errors_.displacement(); }
-  double predictionErrorDamage() const override { return errors_.damage(); }
+  double predictionErrorDisplacement() const { return errors_.displacement(); }
+  double predictionErrorDamage() const { return errors_.damage(); }
 
   std::vector<std::uint8_t> saveState() const override {
     ByteWriter w;
@@ -141,10 +142,85 @@ class LearnedFractureRunner final : public Runner {
   std::size_t frame_ = 0;
 };
 
+using C = Causality;
+using V = Variability;
+using I = Initial;
+using T = VarType;
+constexpr ValueReference kSample = 140, kCriticalStretch = 141, kErrorDisplacement = 142, kErrorDamage = 143;
+
+std::vector<ValueReference> onNoInput() { return {}; }
+
+const LearnedFractureRunner& learned(const Runner& r) { return static_cast<const LearnedFractureRunner&>(r); }
+
+// learnedSample's items 1, 2, 3 are LearnedSample 0, 1, 2 (the values are checked when they are set).
+void configure(SceneParameters& p) {
+  p.learnedSample = static_cast<LearnedSample>(static_cast<std::int32_t>(ownValue(p, kSample)) - 1);
+  p.learnedCriticalStretch = ownValue(p, kCriticalStretch);
+}
+
+// The sample has its own grid (the runner checks nx, ny).
+void validateLearned(const SceneParameters& p) {
+  require(std::isfinite(p.learnedCriticalStretch) && p.learnedCriticalStretch >= 0 && std::isfinite(p.internalTimeStep) &&
+              p.internalTimeStep >= 0,
+          "learnedCriticalStretch and internalTimeStep must be >= 0 (got " + std::to_string(p.learnedCriticalStretch) +
+              ", " + std::to_string(p.internalTimeStep) + ")");
+}
+
 }  // namespace
 
-std::unique_ptr<Runner> makeLearnedFractureRunner(const SceneParameters& p) {
-  return std::make_unique<LearnedFractureRunner>(p);
+SceneDeclaration learnedFractureScene() {
+  return {
+      .id = SceneId::LearnedFracture,
+      .name = "learnedFracture",
+      .description =
+          "The LPS model learned from molecular dynamics of graphene (You et al., paper 003) predicting an MD "
+          "fracture sample (learnedSample) from its frame 0: the kernel, moduli and s0 learned by learn_lps (or s0 = "
+          "learnedCriticalStretch), edges or body force driven by the frames; needs the FMU's resources. nx, ny: the "
+          "sample's grid (20 x 20, or 31 x 31 for trainingFine); each communication step is a whole number of MD "
+          "frame intervals of 4.95e-14 s (8 explicit steps each, or internalTimeStep), up to frame 40 (stop time "
+          "1.98e-12 s); predictionErrorDisplacement and predictionErrorDamage compare with the frames so far",
+      .variables = {
+    {.name = "learnedSample", .vr = kSample, .type = T::Enumeration, .causality = C::Parameter,
+     .variability = V::Fixed, .initial = I::Exact,
+     .description = "learnedFracture scene: the MD fracture sample predicted", .declaredType = "PeriStep.LearnedSample",
+     .start = "1"},
+    {.name = "learnedCriticalStretch", .vr = kCriticalStretch, .type = T::Float64,
+     .causality = C::Parameter, .variability = V::Fixed, .initial = I::Exact,
+     .description = "learnedFracture scene: critical stretch s0 of the smooth bond states 003:(28) at h = 5 A "
+                    "(the fine sample takes s0 sqrt(5/3.17), 003 Sec. 5.4); 0: the s0 learned with the model "
+                    "(frames 5-20 of sample III); 003's value 0.11",
+     .start = "0", .min = Bound{0}},
+    {.name = "predictionErrorDisplacement", .vr = kErrorDisplacement, .type = T::Float64,
+     .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
+     .description = "learnedFracture scene: sqrt(sum_f |u_pred - u_MD|^2 / sum_f |u_MD|^2) over the frames "
+                    "predicted so far and all points (003 Sec. 5.1); 0 before the first frame and in the other "
+                    "scenes",
+     .dependencies = onNoInput(), .cName = "PREDICTION_ERROR_U"},
+    {.name = "predictionErrorDamage", .vr = kErrorDamage, .type = T::Float64,
+     .causality = C::Output, .variability = V::Continuous, .initial = I::Calculated,
+     .description = "learnedFracture scene: the same for the damage 003:(46), the MD frames' own with the same "
+                    "s0 and slit; 0 before the first frame and in the other scenes",
+     .dependencies = onNoInput()},
+      },
+      .enumerations = {
+    {"PeriStep.LearnedSample",
+     "MD fracture samples of paper 003 Sec. 5 (scripts/md/generate.py)",
+     {{"training", 1,
+       "Sample III, h = 5 A (nx = ny = 20): pre-stretched sheet with a slit, vertical edges pulled; the edge "
+       "layers one horizon wide follow the frames"},
+      {"test", 2, "Sample IV, h = 5 A (nx = ny = 20): free edges, the body-force pulse"},
+      {"trainingFine", 3,
+       "Sample III on h = 3.17 A (nx = ny = 31), horizon 4 h, s0 scaled by sqrt(5/3.17)"}},
+     "PERISTEP_LEARNED_"},
+      },
+      .outputs = {{kErrorDisplacement, [](const Runner& r) { return learned(r).predictionErrorDisplacement(); }},
+                  {kErrorDamage, [](const Runner& r) { return learned(r).predictionErrorDamage(); }}},
+      .configure = configure,
+      .validate = validateLearned,
+      .make = [](const SceneParameters& p) -> std::unique_ptr<Runner> {
+        return std::make_unique<LearnedFractureRunner>(p);
+      },
+  };
 }
 
 }  // namespace peristep

@@ -16,6 +16,7 @@
 #include "scenes/kl_plate.hpp"
 #include "scenes/plexiglass_crack.hpp"
 #include "scenes/scene_cost.hpp"
+#include "scenes/scene_declaration.hpp"
 #include "scenes/scene_runner.hpp"
 
 namespace peristep {
@@ -93,18 +94,13 @@ XiDistribution xiDistribution(const SceneParameters& p, std::size_t k) {
 double xiScale(const SceneParameters& p, std::size_t) { return exactSolution(p) == ExactSolution::Smooth ? 0.1 : 1.0; }
 
 void validate(const SceneParameters& p) {
-  require(p.scene == SceneId::Smooth || p.scene == SceneId::Composite || p.scene == SceneId::InterfaceCrack ||
-              p.scene == SceneId::GlassCeramic || p.scene == SceneId::KlPlate || p.scene == SceneId::Specimen ||
-              p.scene == SceneId::GamutBar || p.scene == SceneId::LearnedFracture || isDynamic(p),
-          "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
+  const SceneDeclaration* scene = findScene(p.scene);
+  require(scene != nullptr, "unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
   if (isDynamic(p))
     validateDynamicScene(p);  // the specimen with the dynamic model and scenes 5-7, its presets
-  else if (p.scene == SceneId::LearnedFracture)  // the sample's own grid (the runner checks nx, ny)
-    require(std::isfinite(p.learnedCriticalStretch) && p.learnedCriticalStretch >= 0 &&
-                std::isfinite(p.internalTimeStep) && p.internalTimeStep >= 0,
-            "learnedCriticalStretch and internalTimeStep must be >= 0 (got " +
-                std::to_string(p.learnedCriticalStretch) + ", " + std::to_string(p.internalTimeStep) + ")");
-  else if (p.scene != SceneId::GamutBar)  // the specimen and its presets (the bar checks its own spec)
+  else if (scene->validate)
+    scene->validate(p);
+  else  // the specimen and its presets
     validate(withPreset(p).specimen, p.grid);
   validateElastic(1.0, p.poissonRatio);
   require(std::isfinite(p.modulusContrast) && p.modulusContrast > 0,
@@ -154,30 +150,6 @@ struct SceneModel::Impl {
   }
 };
 
-namespace {
-
-std::unique_ptr<Runner> makeRunner(const SceneParameters& p) {
-  switch (p.scene) {
-    case SceneId::GlassCeramic: return makeSpecimenRunner(withPreset(p));
-    case SceneId::Smooth:
-    case SceneId::Composite:
-    case SceneId::InterfaceCrack:
-    case SceneId::KlPlate: return makeElasticSpecimenRunner(withPreset(p));
-    case SceneId::Specimen:
-      return isDynamic(p)                                   ? makeDynamicRunner(p)
-             : p.specimen.model == SpecimenModel::Elastic ? makeElasticSpecimenRunner(p)
-                                                           : makeSpecimenRunner(p);
-    case SceneId::GamutBar: return makeGamutBarRunner(p);
-    case SceneId::LearnedFracture: return makeLearnedFractureRunner(p);
-    case SceneId::PlexiglassCrack:
-    case SceneId::BendingOneNotch:
-    case SceneId::BendingTwoNotches: return makeDynamicRunner(withPreset(p));
-  }
-  throw InvalidInput("unknown scene " + std::to_string(static_cast<std::int64_t>(p.scene)));
-}
-
-}  // namespace
-
 SceneModel::SceneModel(const SceneParameters& p) : impl_(std::make_unique<Impl>()) {
   // Eigen splits its dense products over OpenMP threads, and the split changes their rounding: off, so a
   // scene gives the same bits on any number of threads (its own loops sum in fixed blocks). The setting
@@ -189,7 +161,7 @@ SceneModel::SceneModel(const SceneParameters& p) : impl_(std::make_unique<Impl>(
   Impl& m = *impl_;
   m.parameters = p;
   if (p.progress) p.progress("setUp", 0, 1);
-  m.runner = makeRunner(p);
+  m.runner = findScene(p.scene)->make(p);
   if (p.progress) p.progress("setUp", 1, 1);
   const PointCloud& cloud = m.runner->cloud();
   for (std::size_t q : cloud.domain) {
@@ -246,6 +218,11 @@ double SceneModel::reactionForce() const { return impl_->runner->reactionForce()
 double SceneModel::crackLength() const { return impl_->runner->crackLength(); }
 double SceneModel::brokenBonds() const { return impl_->runner->brokenBonds(); }
 double SceneModel::fractureEnergy() const { return impl_->runner->fractureEnergy(); }
+double SceneModel::ownOutput(ValueReference vr) const {
+  for (const OwnOutput& o : findScene(impl_->parameters.scene)->outputs)
+    if (o.vr == vr) return o.read(*impl_->runner);
+  return 0.0;
+}
 double SceneModel::toughnessKIC() const { return impl_->runner->toughnessKIC(); }
 bool SceneModel::separated() const { return impl_->runner->separated(); }
 std::array<double, 2> SceneModel::gripReaction(Side side) const { return impl_->runner->gripReaction(side); }
@@ -254,12 +231,6 @@ double SceneModel::strainEnergy() const { return impl_->runner->strainEnergy(); 
 double SceneModel::kineticEnergy() const { return impl_->runner->kineticEnergy(); }
 double SceneModel::externalWork() const { return impl_->runner->externalWork(); }
 double SceneModel::forceEvaluations() const { return impl_->runner->forceEvaluations(); }
-double SceneModel::barStress() const { return impl_->runner->barStress(); }
-double SceneModel::barStrain() const { return impl_->runner->barStrain(); }
-double SceneModel::cyclicExponent() const { return impl_->runner->cyclicExponent(); }
-double SceneModel::cyclicCoefficient() const { return impl_->runner->cyclicCoefficient(); }
-double SceneModel::predictionErrorDisplacement() const { return impl_->runner->predictionErrorDisplacement(); }
-double SceneModel::predictionErrorDamage() const { return impl_->runner->predictionErrorDamage(); }
 
 std::vector<std::uint8_t> SceneModel::saveState() const {
   ByteWriter w;

@@ -4,12 +4,14 @@
 // read-out, and throws InvalidInput / SolverFailure with a precise message; it never terminates.
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "core/progress.hpp"
+#include "core/variable_declaration.hpp"
 #include "geometry/point_cloud.hpp"
 #include "linalg/linear_solver_kind.hpp"
 #include "models/gamut_bar.hpp"
@@ -86,6 +88,9 @@ struct SceneParameters {
   LearnedSample learnedSample = LearnedSample::Training;
   double learnedCriticalStretch = 0;
   std::string resourcePath;
+  // The values of the scene's own parameters by value reference (scenes/scene_declaration.hpp), in double
+  // precision; a parameter not here takes its start value.
+  std::map<ValueReference, std::vector<double>> own;
   WorkLimits limits;
   ProgressHook progress;            // optional: told how far long set-ups and steps have come
 };
@@ -181,16 +186,8 @@ class SceneModel {
   double kineticEnergy() const;
   double externalWork() const;
   double forceEvaluations() const;
-  // GamutBar (0 otherwise): end stress F / A [Pa] and strain u(L) / L of the last step; n' and K' [Pa] of
-  // the cyclic protocol once its last step is done (0 before, and in monotonic loading).
-  double barStress() const;
-  double barStrain() const;
-  double cyclicExponent() const;
-  double cyclicCoefficient() const;
-  // LearnedFracture (0 otherwise): the displacement and damage errors of 003 Sec. 5.1 against the MD frames,
-  // over the frames predicted so far (0 before the first).
-  double predictionErrorDisplacement() const;
-  double predictionErrorDamage() const;
+  // An output the scene declares as its own (scenes/scene_declaration.hpp); 0 for another scene's.
+  double ownOutput(ValueReference vr) const;
 
   // Checkpoint of everything that changes after set-up (load, solution, bond state).
   std::vector<std::uint8_t> saveState() const;

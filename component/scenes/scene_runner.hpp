@@ -1,6 +1,7 @@
 #pragma once
 // One built-in scene behind a common face: SceneModel owns a Runner and keeps the fields the FMI layer
-// reads. Each scene family lives in its own *_runner.cpp and is made by the factory declared here.
+// reads. A scene's own outputs are read from its concrete runner by its declaration (scenes/scene_declaration.hpp);
+// the factories of the specimen's runners, which several scenes share, are declared here.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -42,14 +43,6 @@ class Runner {
   virtual double kineticEnergy() const { return 0.0; }
   virtual double externalWork() const { return 0.0; }
   virtual double forceEvaluations() const { return 0.0; }
-  // The 1D bar of 002 (GamutBar): end stress [Pa], strain, cyclic n' and K' [Pa].
-  virtual double barStress() const { return 0.0; }
-  virtual double barStrain() const { return 0.0; }
-  virtual double cyclicExponent() const { return 0.0; }
-  virtual double cyclicCoefficient() const { return 0.0; }
-  // The learned model's errors against the MD frames so far (LearnedFracture).
-  virtual double predictionErrorDisplacement() const { return 0.0; }
-  virtual double predictionErrorDamage() const { return 0.0; }
   virtual std::vector<std::uint8_t> saveState() const = 0;
   virtual void restoreState(std::span<const std::uint8_t> bytes) = 0;
 };
@@ -58,8 +51,6 @@ class Runner {
 std::unique_ptr<Runner> makeDynamicRunner(const SceneParameters& p);         // 001 Sec. 6 (5-7), dynamic specimen
 std::unique_ptr<Runner> makeSpecimenRunner(const SceneParameters& p);        // quasi-static specimens (withPreset)
 std::unique_ptr<Runner> makeElasticSpecimenRunner(const SceneParameters& p);  // elastic specimens (withPreset)
-std::unique_ptr<Runner> makeGamutBarRunner(const SceneParameters& p);        // 002's 1D bar
-std::unique_ptr<Runner> makeLearnedFractureRunner(const SceneParameters& p);  // 003's prediction
 // The dynamic scenes' own checks (the preset's specimen, a lattice without jitter, integrator options);
 // throws InvalidInput.
 void validateDynamicScene(const SceneParameters& p);

@@ -17,6 +17,7 @@ COARSE = {
     "bendingTwoNotches": dict(nx=80, ny=16, Lx=0.25 - 3.125e-3, Ly=0.05 - 3.125e-3, poissonRatio=0.25),
     "gamutBar": dict(nx=2, ny=2, gamutBonds=16),
     "learnedFracture": dict(nx=20, ny=20),
+    "patchTest": dict(nx=9, ny=9),
 }
 
 
