@@ -1,21 +1,20 @@
 #include "hdf5_writer.hpp"
 
-#include <hdf5.h>
-
 #include <string>
-#include <type_traits>
 
 #include "hdf5_support.hpp"
 #include "host_errors.hpp"
 
 namespace peristep::host {
 
-static_assert(std::is_same_v<hid_t, std::int64_t>, "the header stores hid_t as std::int64_t");
+using hdf5::check;
+using hdf5::Handle;
+using hdf5::toDims;
 
 namespace {
 
 // A dataset [0][shape...] that grows by one record per step.
-hid_t createSeries(hid_t parent, const std::string& path, const std::vector<std::uint64_t>& itemShape) {
+Handle createSeries(hid_t parent, const std::string& path, const std::vector<std::uint64_t>& itemShape) {
   std::vector<hsize_t> dims{0}, maxDims{H5S_UNLIMITED}, chunk{1};
   for (hsize_t e : toDims(itemShape)) dims.push_back(e), maxDims.push_back(e), chunk.push_back(e);
   const bool scalarSeries = itemShape.empty();
@@ -28,9 +27,8 @@ hid_t createSeries(hid_t parent, const std::string& path, const std::vector<std:
     check(H5Pset_shuffle(props), "shuffle " + path);  // byte shuffling roughly doubles deflate's gain on doubles
     check(H5Pset_deflate(props, 4), "compress " + path);
   }
-  const hid_t id = H5Dcreate2(parent, path.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, props, H5P_DEFAULT);
-  if (id < 0) throw RunError("HDF5: cannot create dataset " + path);
-  return id;
+  return {H5Dcreate2(parent, path.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, props, H5P_DEFAULT), H5Dclose,
+          "create dataset " + path};
 }
 
 void appendRecord(hid_t dataset, std::uint64_t step, const double* data, const std::string& what) {
@@ -80,27 +78,21 @@ void createView(hid_t file, const std::string& path, const std::vector<hsize_t>&
 }  // namespace
 
 Hdf5Writer::Hdf5Writer(const std::filesystem::path& file, const ResultLayout& layout) : file_(file), layout_(layout) {
-  // Our own one-line messages replace HDF5's error-stack dumps on stderr.
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  fileId_ = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (fileId_ < 0) throw RunError(file.string() + ": cannot create the HDF5 file");
   try {
+    fileId_ = hdf5::createFile(file.string());
+  } catch (const hdf5::Error&) {
+    throw RunError(file.string() + ": cannot create the HDF5 file");
+  }
+  // On a failure the handles made so far close with the half-built writer.
+  asRunError([&] {
     for (const Attribute& a : layout.fileAttributes) writeAttribute(fileId_, a);
-    Handle parameters(H5Gcreate2(fileId_, "/parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
-                      "create /parameters");
+    const Handle parameters = hdf5::createGroup(fileId_, "/parameters");
     for (const Attribute& a : layout.parameterAttributes) writeAttribute(parameters, a);
 
-    Handle grid(H5Gcreate2(fileId_, "/grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /grid");
+    const Handle grid = hdf5::createGroup(fileId_, "/grid");
     for (std::size_t i = 0; i < layout.constantArrays.size(); ++i) {
       const ArrayInfo& a = layout.constantArrays[i];
-      const auto dims = toDims(a.shape);
-      Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose,
-                   "create the dataspace of /grid/" + a.name);
-      Handle data(H5Dcreate2(grid, a.name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                  H5Dclose, "create /grid/" + a.name);
-      check(H5Dwrite(data, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, layout.constantValues[i].data()),
-            "write /grid/" + a.name);
-      describe(data, a);
+      describe(hdf5::writeDataset(grid, a.name, a.shape, layout.constantValues[i].data()), a);
     }
 
     // x and y interleaved for the XDMF geometry.
@@ -110,57 +102,52 @@ Hdf5Writer::Hdf5Writer(const std::filesystem::path& file, const ResultLayout& la
 
     series_.push_back(createSeries(fileId_, "/time", {}));
     if (!layout.inputName.empty()) {
-      Handle inputs(H5Gcreate2(fileId_, "/inputs", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /inputs");
+      const Handle inputs = hdf5::createGroup(fileId_, "/inputs");
       series_.push_back(createSeries(inputs, layout.inputName, {}));
     }
-    Handle scalars(H5Gcreate2(fileId_, "/scalars", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /scalars");
+    const Handle scalars = hdf5::createGroup(fileId_, "/scalars");
     for (const ArrayInfo& s : layout.scalars) {
       series_.push_back(createSeries(scalars, s.name, {}));
       describe(series_.back(), s);
     }
-    Handle fields(H5Gcreate2(fileId_, "/fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /fields");
+    const Handle fields = hdf5::createGroup(fileId_, "/fields");
     for (const ArrayInfo& f : layout.fields) {
       series_.push_back(createSeries(fields, f.name, f.shape));
       describe(series_.back(), f);
     }
     check(H5Fflush(fileId_, H5F_SCOPE_GLOBAL), "flush " + file.string());
-  } catch (...) {
-    close();
-    throw;
-  }
+  });
 }
 
-Hdf5Writer::~Hdf5Writer() { close(); }
-
 void Hdf5Writer::close() {
-  for (hid_t d : series_) H5Dclose(d);
   series_.clear();
-  if (fileId_ >= 0) H5Fclose(fileId_);
-  fileId_ = -1;
+  fileId_ = {};
 }
 
 void Hdf5Writer::append(const StepValues& step) {
   if (fileId_ < 0) throw RunError(file_.string() + ": appending to a closed HDF5 file");
   if (step.scalars.size() != layout_.scalars.size() || step.fields.size() != layout_.fields.size())
     throw RunError(file_.string() + ": a step does not match the layout of the file");
-  std::size_t k = 0;
-  appendRecord(series_[k++], steps_, &step.time, "/time");
-  if (!layout_.inputName.empty()) appendRecord(series_[k++], steps_, &step.input, "/inputs/" + layout_.inputName);
-  for (std::size_t i = 0; i < layout_.scalars.size(); ++i)
-    appendRecord(series_[k++], steps_, &step.scalars[i], "/scalars/" + layout_.scalars[i].name);
-  for (std::size_t i = 0; i < layout_.fields.size(); ++i) {
-    if (step.fields[i].size() != elementCount(layout_.fields[i].shape))
-      throw RunError(file_.string() + ": field " + layout_.fields[i].name + " changed its size");
-    appendRecord(series_[k++], steps_, step.fields[i].data(), "/fields/" + layout_.fields[i].name);
-  }
-  for (const ArrayInfo& f : layout_.fields) {
-    if (!layout_.onGrid(f)) continue;
-    const hsize_t ny = layout_.ny, nx = layout_.nx;
-    createView(fileId_, xdmfFieldPath(steps_, f.name), {ny, nx},
-               {{{0, 0}, {ny, nx}, "/fields/" + f.name, {steps_, 0, 0}, {1, ny, nx}}});
-  }
-  // Flushed per step: whatever the next step does, the steps already written stay readable.
-  check(H5Fflush(fileId_, H5F_SCOPE_GLOBAL), "flush " + file_.string());
+  asRunError([&] {
+    std::size_t k = 0;
+    appendRecord(series_[k++], steps_, &step.time, "/time");
+    if (!layout_.inputName.empty()) appendRecord(series_[k++], steps_, &step.input, "/inputs/" + layout_.inputName);
+    for (std::size_t i = 0; i < layout_.scalars.size(); ++i)
+      appendRecord(series_[k++], steps_, &step.scalars[i], "/scalars/" + layout_.scalars[i].name);
+    for (std::size_t i = 0; i < layout_.fields.size(); ++i) {
+      if (step.fields[i].size() != elementCount(layout_.fields[i].shape))
+        throw RunError(file_.string() + ": field " + layout_.fields[i].name + " changed its size");
+      appendRecord(series_[k++], steps_, step.fields[i].data(), "/fields/" + layout_.fields[i].name);
+    }
+    for (const ArrayInfo& f : layout_.fields) {
+      if (!layout_.onGrid(f)) continue;
+      const hsize_t ny = layout_.ny, nx = layout_.nx;
+      createView(fileId_, xdmfFieldPath(steps_, f.name), {ny, nx},
+                 {{{0, 0}, {ny, nx}, "/fields/" + f.name, {steps_, 0, 0}, {1, ny, nx}}});
+    }
+    // Flushed per step: whatever the next step does, the steps already written stay readable.
+    check(H5Fflush(fileId_, H5F_SCOPE_GLOBAL), "flush " + file_.string());
+  });
   ++steps_;
   history_.push_back({step.time, step.input, step.scalars});
 }

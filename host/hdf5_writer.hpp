@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "hdf5_io.hpp"
 #include "result_layout.hpp"
 
 namespace peristep::host {
@@ -23,10 +24,8 @@ class Hdf5Writer {
  public:
   // Creates (truncates) the file and writes the grid and attributes. Throws RunError.
   Hdf5Writer(const std::filesystem::path& file, const ResultLayout& layout);
-  ~Hdf5Writer();
-  Hdf5Writer(const Hdf5Writer&) = delete;
-  Hdf5Writer& operator=(const Hdf5Writer&) = delete;
 
+  // Throws RunError.
   void append(const StepValues& step);
   std::uint64_t steps() const { return steps_; }
   const std::vector<StepScalars>& history() const { return history_; }
@@ -36,8 +35,8 @@ class Hdf5Writer {
  private:
   std::filesystem::path file_;
   const ResultLayout& layout_;
-  std::int64_t fileId_ = -1;
-  std::vector<std::int64_t> series_;  // time, input (if any), scalars, fields: in this order
+  hdf5::Handle fileId_;
+  std::vector<hdf5::Handle> series_;  // time, input (if any), scalars, fields: in this order
   std::uint64_t steps_ = 0;
   std::vector<StepScalars> history_;
 };

@@ -70,15 +70,7 @@ std::string readAll(int fd) {
 }  // namespace
 
 Scene sceneAtLevel(const Scene& scene, const ModelDescription& md, std::uint64_t level) {
-  Scene out = scene;
-  for (const char* name : {"nx", "ny"}) {
-    const Variable* v = md.find(name);
-    if (!v || v->causality != Causality::StructuralParameter || v->type != VarType::UInt64)
-      throw InputError(md.modelName + " has no structural UInt64 parameter " + name + " to refine");
-    std::erase_if(out.parameters, [&](const Setting& s) { return s.variable.name == name; });
-    out.parameters.push_back({*v, std::vector<std::uint64_t>{level + 1}});
-  }
-  return out;
+  return sceneWithGrid(scene, md, level + 1, level + 1, "refine");
 }
 
 LevelResult runLevel(const FmuArchive& fmu, const ModelDescription& md, const Scene& scene, std::uint64_t level,

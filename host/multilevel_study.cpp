@@ -21,34 +21,37 @@ namespace {
 std::uint64_t gridSize(const Scene& scene, const ModelDescription& md, const char* name) {
   if (const Setting* s = scene.setting(name))
     if (const auto* v = std::get_if<std::vector<std::uint64_t>>(&s->values); v && v->size() == 1) return v->front();
-  const Variable* v = md.find(name);
-  if (!v || v->causality != Causality::StructuralParameter || v->type != VarType::UInt64 || !v->start)
-    throw InputError("--rule mlmc: " + md.modelName + " has no structural UInt64 parameter " + name + " to coarsen");
-  return std::stoull(*v->start);
+  const Variable& v = gridVariable(md, name, "coarsen");
+  if (!v.start) throw InputError("--rule mlmc: " + md.modelName + " gives " + name + " no start value to coarsen");
+  return std::stoull(*v.start);
 }
 
-// Q of one grid at every job of a plan, with the wall time and refusals, from the store.
+// Q of one grid at the jobs of a level's plan so far, with the wall times and refusals: grown by the new
+// jobs of each round (a Monte Carlo plan of more samples starts with those of fewer).
 struct GridValues {
   std::vector<double> values, seconds;
-  std::map<std::size_t, std::string> failed;  // job index -> message
-  std::string unit;
+  std::map<std::size_t, std::string> failed;  // job index -> the component's message
 };
 
-GridValues collectQuantity(SampleStudy& study, const LevelPlan& plan, std::size_t level, const std::string& quantity) {
-  const LevelResult r = study.collect(plan, SampleRule::MonteCarlo, level);
-  const auto& scalars = study.layout().scalars;
+std::size_t quantityIndex(const ResultLayout& layout, const std::string& quantity) {
+  const auto& scalars = layout.scalars;
   const auto it = std::find_if(scalars.begin(), scalars.end(), [&](const ArrayInfo& a) { return a.name == quantity; });
   if (it == scalars.end()) {
     std::string names;
     for (const ArrayInfo& a : scalars) names += (names.empty() ? "" : ", ") + a.name;
     throw InputError("--quantity: '" + quantity + "' is not a scalar Float64 output of this scene (" + names + ")");
   }
-  GridValues g;
-  g.unit = it->unit;
-  const auto i = static_cast<std::size_t>(it - scalars.begin());
-  for (const SampleRecord& s : r.records) g.values.push_back(s.scalars[i]), g.seconds.push_back(s.seconds);
-  for (const SampleFailure& f : r.failures) g.failed[f.index] = f.message;
-  return g;
+  return static_cast<std::size_t>(it - scalars.begin());
+}
+
+// Adds the plan's jobs that `g` does not hold yet: Q only, read from the store without the fields.
+void collectNew(SampleStudy& study, const LevelPlan& plan, std::size_t level, const std::string& quantity, GridValues& g) {
+  const std::size_t first = g.values.size();
+  if (first >= plan.jobs.size()) return;
+  ScalarSamples s = study.collectScalar(plan, level, quantityIndex(study.layout(), quantity), first);
+  g.values.insert(g.values.end(), s.values.begin(), s.values.end());
+  g.seconds.insert(g.seconds.end(), s.seconds.begin(), s.seconds.end());
+  g.failed.merge(s.failures);
 }
 
 double meanOf(const std::vector<double>& v) {
@@ -67,17 +70,14 @@ std::string threadsPerSample() {
 Scene sceneOnGrid(const Scene& scene, const ModelDescription& md, std::size_t grids, std::size_t level,
                   std::uint64_t& nx, std::uint64_t& ny) {
   const std::uint64_t factor = std::uint64_t{1} << (grids - 1 - level);
-  Scene out = scene;
   for (const char* name : {"nx", "ny"}) {
     const std::uint64_t n = gridSize(scene, md, name);
     if (n < 2 || (n - 1) % factor != 0 || (n - 1) / factor < 1)
       throw InputError("--rule mlmc --grids " + std::to_string(grids) + ": " + name + " - 1 = " + std::to_string(n - 1) +
                        " must be a multiple of " + std::to_string(factor) + " (each coarser grid halves it)");
     (name[1] == 'x' ? nx : ny) = (n - 1) / factor + 1;
-    std::erase_if(out.parameters, [&](const Setting& s) { return s.variable.name == name; });
-    out.parameters.push_back({*md.find(name), std::vector<std::uint64_t>{(n - 1) / factor + 1}});
   }
-  return out;
+  return sceneWithGrid(scene, md, nx, ny, "coarsen");
 }
 
 MultilevelResult runMultilevel(const FmuLibrary& library, const ModelDescription& md, const Scene& scene,
@@ -128,6 +128,8 @@ MultilevelResult runMultilevel(const FmuLibrary& library, const ModelDescription
   };
 
   std::vector<std::uint64_t> counts(L, options.pilot);
+  // Level l: Q on grid l and (l > 0) on grid l - 1 at the jobs of level l's plan, collected so far.
+  std::vector<GridValues> fineValues(L), coarseValues(L);
   for (r.rounds = 1;; ++r.rounds) {
     std::vector<LevelPlan> plans;
     for (std::size_t l = 0; l < L; ++l) {
@@ -139,21 +141,24 @@ MultilevelResult runMultilevel(const FmuLibrary& library, const ModelDescription
     std::vector<std::uint64_t> next;
     if (mpi.rank() == 0) {
       r.levels.assign(L, {});
+      const ResultLayout& layout = studies.back()->layout();
+      r.unit = layout.scalars[quantityIndex(layout, options.quantity)].unit;
       std::vector<sampling::LevelStatistics> stats;
       std::vector<double> variance, cost;
       for (std::size_t l = 0; l < L; ++l) {
         MultilevelLevel& level = r.levels[l];
         level.nx = nx[l], level.ny = ny[l], level.planned = counts[l];
-        const GridValues fine = collectQuantity(*studies[l], plans[l], l, options.quantity);
-        const GridValues coarse = l > 0 ? collectQuantity(*studies[l - 1], plans[l], l, options.quantity) : GridValues{};
-        r.unit = fine.unit;
+        collectNew(*studies[l], plans[l], l, options.quantity, fineValues[l]);
+        if (l > 0) collectNew(*studies[l - 1], plans[l], l, options.quantity, coarseValues[l]);
+        const GridValues& fine = fineValues[l];
+        const GridValues& coarse = coarseValues[l];
         std::vector<double> diff, fineSeconds, coarseSeconds;
         for (std::size_t k = 0; k < counts[l]; ++k) {
           const auto failedFine = fine.failed.find(k);
           const auto failedCoarse = l > 0 ? coarse.failed.find(k) : coarse.failed.end();
           if (failedFine != fine.failed.end() || failedCoarse != coarse.failed.end()) {
             const std::string& why = failedFine != fine.failed.end() ? failedFine->second : failedCoarse->second;
-            level.failures.push_back({k, "level " + std::to_string(l) + ": " + why});
+            level.failures.push_back({k, "level " + std::to_string(l) + ": " + describeJob(plans[l], k) + ": " + why});
             continue;
           }
           level.fine.push_back(fine.values[k]);

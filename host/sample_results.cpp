@@ -27,7 +27,7 @@ std::string momentsNote(const LevelResult& r) {
 
 void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const ResultLayout& layout) {
   const std::string name = "level_" + std::to_string(r.level);
-  Handle group(createGroup(file, name), H5Gclose, "create " + name);
+  const hdf5::Handle group = hdf5::createGroup(file, name);
   const std::uint64_t Q = r.records.size();
   writeAttribute(group, {"rule", rule});
   writeAttribute(group, {"level", std::vector<std::uint64_t>{r.level}});
@@ -40,12 +40,12 @@ void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const
   if (r.diffMean) writeAttribute(group, {"diffMeanToLastLevel", std::vector<double>{*r.diffMean}});
   if (r.diffStd) writeAttribute(group, {"diffStdToLastLevel", std::vector<double>{*r.diffStd}});
 
-  if (r.plan.set.dims > 0) writeDataset(group, "nodes", {Q, r.plan.set.dims}, r.plan.set.points.data());
-  writeDataset(group, "weights", {Q}, r.plan.set.weights.data());
+  if (r.plan.set.dims > 0) hdf5::writeDataset(group, "nodes", {Q, r.plan.set.dims}, r.plan.set.points.data());
+  hdf5::writeDataset(group, "weights", {Q}, r.plan.set.weights.data());
   if (!r.plan.jobs.empty() && r.plan.jobs.front().seed) {
     std::vector<double> seeds;
     for (const SampleJob& j : r.plan.jobs) seeds.push_back(static_cast<double>(*j.seed));
-    writeDataset(group, "seeds", {Q}, seeds.data());
+    hdf5::writeDataset(group, "seeds", {Q}, seeds.data());
   }
 
   if (!r.failures.empty()) {
@@ -63,12 +63,12 @@ void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const
                              std::vector<double> Moments::*member) {
     if ((r.scalarMoments.*member).empty() && (r.fieldMoments.empty() || (r.fieldMoments.front().*member).empty()))
       return;
-    Handle g(createGroup(group, name), H5Gclose, "create " + name);
+    const hdf5::Handle g = hdf5::createGroup(group, name);
     writeAttribute(g, {"estimate", estimate});
     for (std::size_t i = 0; i < layout.scalars.size(); ++i)
-      writeDataset(g, layout.scalars[i].name, {}, &(r.scalarMoments.*member)[i]);
+      hdf5::writeDataset(g, layout.scalars[i].name, {}, &(r.scalarMoments.*member)[i]);
     for (std::size_t f = 0; f < layout.fields.size(); ++f)
-      writeDataset(g, layout.fields[f].name, layout.fields[f].shape, (r.fieldMoments[f].*member).data());
+      hdf5::writeDataset(g, layout.fields[f].name, layout.fields[f].shape, (r.fieldMoments[f].*member).data());
   };
   statistic("mean", "sum_k w_k q_k, 000:(3.10)", &Moments::mean);
   statistic("std", "direct estimate with the rule's weights (Monte Carlo: 1/Q): sqrt(sum_k w_k (q_k - mean)^2), "
@@ -81,11 +81,11 @@ void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const
             &Moments::seVar);
   statistic("se_std", "Monte Carlo standard error of std: se_variance/(2 std) (delta method)", &Moments::seStd);
 
-  Handle samples(createGroup(group, "samples"), H5Gclose, "create samples");
+  const hdf5::Handle samples = hdf5::createGroup(group, "samples");
   for (std::size_t i = 0; i < layout.scalars.size(); ++i) {
     std::vector<double> v;
     for (const SampleRecord& s : r.records) v.push_back(s.scalars[i]);
-    writeDataset(samples, layout.scalars[i].name, {Q}, v.data());
+    hdf5::writeDataset(samples, layout.scalars[i].name, {Q}, v.data());
   }
   for (std::size_t f = 0; f < layout.fields.size(); ++f) {
     const ArrayInfo& info = layout.fields[f];
@@ -93,7 +93,7 @@ void writeLevel(hid_t file, const LevelResult& r, const std::string& rule, const
     shape.insert(shape.end(), info.shape.begin(), info.shape.end());
     std::vector<double> all;
     for (const SampleRecord& s : r.records) all.insert(all.end(), s.fields[f].begin(), s.fields[f].end());
-    writeDataset(samples, info.name, shape, all.data());
+    hdf5::writeDataset(samples, info.name, shape, all.data());
   }
 }
 
@@ -110,28 +110,27 @@ void writeXdmfGeometry(hid_t file, const ResultLayout& layout) {
   if (!x || !y) return;
   std::vector<double> xy(2 * x->size());
   for (std::size_t k = 0; k < x->size(); ++k) xy[2 * k] = (*x)[k], xy[2 * k + 1] = (*y)[k];
-  Handle group(createGroup(file, "xdmf"), H5Gclose, "create xdmf");
-  writeDataset(group, "xy", {layout.ny, layout.nx, 2}, xy.data());
+  const hdf5::Handle group = hdf5::createGroup(file, "xdmf");
+  hdf5::writeDataset(group, "xy", {layout.ny, layout.nx, 2}, xy.data());
 }
 
 }  // namespace
 
 void writeStudyHdf5(const std::filesystem::path& file, const StudyDescription& study, const ResultLayout& layout,
                     const std::vector<LevelResult>& levels) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const std::filesystem::path partial = partialName(file);
-  {
-    Handle f(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
-             "create " + partial.string());
+  asRunError([&] {
+    hdf5::Handle f = hdf5::createFile(partial.string());
     writeAttribute(f, {"scene", study.scene});
     writeAttribute(f, {"rule", study.rule});
     for (const Attribute& a : study.attributes) writeAttribute(f, a);
-    Handle grid(createGroup(f, "grid"), H5Gclose, "create grid");
+    const hdf5::Handle grid = hdf5::createGroup(f, "grid");
     for (std::size_t i = 0; i < layout.constantArrays.size(); ++i)
-      writeDataset(grid, layout.constantArrays[i].name, layout.constantArrays[i].shape, layout.constantValues[i].data());
+      hdf5::writeDataset(grid, layout.constantArrays[i].name, layout.constantArrays[i].shape, layout.constantValues[i].data());
     writeXdmfGeometry(f, layout);
     for (const LevelResult& r : levels) writeLevel(f, r, study.rule, layout);
-  }
+    f.close("close " + partial.string());
+  });
   std::error_code ec;
   std::filesystem::rename(partial, file, ec);
   if (ec) throw RunError("cannot rename " + partial.string() + " to " + file.string() + ": " + ec.message());

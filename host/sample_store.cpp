@@ -41,11 +41,14 @@ struct Reader {
     bytes.remove_prefix(sizeof v);
     return true;
   }
-  bool getVector(std::vector<double>& v, std::uint64_t expected) {
+  // keep = false: the vector is checked and passed over, `v` left empty.
+  bool getVector(std::vector<double>& v, std::uint64_t expected, bool keep = true) {
     std::uint64_t n = 0;
     if (!get(n) || n != expected || bytes.size() / sizeof(double) < n) return false;
-    v.resize(n);
-    std::memcpy(v.data(), bytes.data(), n * sizeof(double));
+    if (keep) {
+      v.resize(n);
+      std::memcpy(v.data(), bytes.data(), n * sizeof(double));
+    }
     bytes.remove_prefix(n * sizeof(double));
     return true;
   }
@@ -104,7 +107,7 @@ std::filesystem::path SampleStore::file(std::uint64_t key) const {
 }
 
 std::optional<SampleRecord> SampleStore::load(std::uint64_t key, std::size_t scalars,
-                                              const std::vector<std::uint64_t>& fieldSizes) const {
+                                              const std::vector<std::uint64_t>& fieldSizes, bool withFields) const {
   std::ifstream in(file(key), std::ios::binary);
   if (!in) return std::nullopt;
   std::ostringstream content;
@@ -126,9 +129,10 @@ std::optional<SampleRecord> SampleStore::load(std::uint64_t key, std::size_t sca
   if (!r.get(record.seconds) || !r.getVector(record.scalars, scalars) || !r.get(nFields) ||
       nFields != fieldSizes.size())
     return std::nullopt;
-  record.fields.resize(nFields);
+  record.fields.resize(withFields ? nFields : 0);
+  std::vector<double> passed;
   for (std::size_t i = 0; i < nFields; ++i)
-    if (!r.getVector(record.fields[i], fieldSizes[i])) return std::nullopt;
+    if (!r.getVector(withFields ? record.fields[i] : passed, fieldSizes[i], withFields)) return std::nullopt;
   if (!r.bytes.empty()) return std::nullopt;
   return record;
 }

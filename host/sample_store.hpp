@@ -34,7 +34,9 @@ class SampleStore {
   // the component are not taken for this one's.
   static std::string fileDigest(const std::filesystem::path& file);
   // The record, or nothing when it is missing or does not match the expected shape (then recomputed).
-  std::optional<SampleRecord> load(std::uint64_t key, std::size_t scalars, const std::vector<std::uint64_t>& fieldSizes) const;
+  // Without fields, the fields are checked but not kept (the record's fields are empty).
+  std::optional<SampleRecord> load(std::uint64_t key, std::size_t scalars, const std::vector<std::uint64_t>& fieldSizes,
+                                   bool withFields = true) const;
   void save(std::uint64_t key, const SampleRecord& record) const;
   // The component's message for a failed sample, or nothing.
   std::optional<std::string> failure(std::uint64_t key) const;

@@ -106,7 +106,7 @@ LevelWork SampleStudy::runJobs(const LevelPlan& plan, const NextJob& next,
     Scene scene;
     std::string definition;
     const std::uint64_t key = keyOf(plan.jobs.at(*index), scene, definition);
-    if (store_.failure(key) || store_.load(key, layout_.scalars.size(), fieldSizes_)) {
+    if (store_.failure(key) || store_.load(key, layout_.scalars.size(), fieldSizes_, false)) {
       ++work.reused;
     } else {
       if (pending_ && pendingDefinition_ != definition) pending_.reset();
@@ -128,6 +128,26 @@ LevelWork SampleStudy::runJobs(const LevelPlan& plan, const NextJob& next,
   return work;
 }
 
+SampleStudy::Stored SampleStudy::stored(const LevelPlan& plan, std::size_t k, bool withFields) const {
+  Scene scene;
+  std::string definition;
+  const std::uint64_t key = keyOf(plan.jobs[k], scene, definition);
+  Stored s;
+  if ((s.record = store_.load(key, layout_.scalars.size(), fieldSizes_, withFields))) return s;
+  s.failure = store_.failure(key);
+  return s;
+}
+
+void SampleStudy::requireStored(const LevelPlan& plan, std::uint64_t level, const std::vector<std::size_t>& missing) const {
+  if (missing.empty()) return;
+  std::string list;
+  for (std::size_t k : missing) list += (list.empty() ? "" : ", ") + std::to_string(k + 1);
+  throw RunError("level " + std::to_string(level) + ": " + std::to_string(missing.size()) + " of " +
+                 std::to_string(plan.jobs.size()) + " samples are not in " + store_.directory().string() +
+                 ": samples " + list + " (first: " + describeJob(plan, missing.front()) +
+                 "); run the shards or the study that computes them first");
+}
+
 LevelResult SampleStudy::collect(LevelPlan plan, SampleRule rule, std::uint64_t level) {
   describe(plan);
   LevelResult r;
@@ -137,15 +157,13 @@ LevelResult SampleStudy::collect(LevelPlan plan, SampleRule rule, std::uint64_t 
   std::vector<std::size_t> missing;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t k = 0; k < r.plan.jobs.size(); ++k) {
-    Scene scene;
-    std::string definition;
-    const std::uint64_t key = keyOf(r.plan.jobs[k], scene, definition);
-    if (std::optional<SampleRecord> record = store_.load(key, layout_.scalars.size(), fieldSizes_)) {
-      r.records.push_back(std::move(*record));
+    Stored s = stored(r.plan, k, true);
+    if (s.record) {
+      r.records.push_back(std::move(*s.record));
       continue;
     }
-    if (std::optional<std::string> message = store_.failure(key)) {
-      r.failures.push_back({k, describeJob(r.plan, k) + ": " + *message});
+    if (s.failure) {
+      r.failures.push_back({k, describeJob(r.plan, k) + ": " + *s.failure});
     } else {
       missing.push_back(k);
     }
@@ -153,16 +171,26 @@ LevelResult SampleStudy::collect(LevelPlan plan, SampleRule rule, std::uint64_t 
     for (std::uint64_t n : fieldSizes_) empty.fields.emplace_back(n, nan);
     r.records.push_back(std::move(empty));
   }
-  if (!missing.empty()) {
-    std::string list;
-    for (std::size_t k : missing) list += (list.empty() ? "" : ", ") + std::to_string(k + 1);
-    throw RunError("level " + std::to_string(level) + ": " + std::to_string(missing.size()) + " of " +
-                   std::to_string(r.plan.jobs.size()) + " samples are not in " + store_.directory().string() +
-                   ": samples " + list + " (first: " + describeJob(r.plan, missing.front()) +
-                   "); run the shards or the study that computes them first");
-  }
+  requireStored(r.plan, level, missing);
   finish(r);
   return r;
+}
+
+ScalarSamples SampleStudy::collectScalar(const LevelPlan& plan, std::uint64_t level, std::size_t scalar,
+                                         std::size_t first) {
+  describe(plan);
+  ScalarSamples out;
+  std::vector<std::size_t> missing;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = first; k < plan.jobs.size(); ++k) {
+    const Stored s = stored(plan, k, false);
+    out.values.push_back(s.record ? s.record->scalars.at(scalar) : nan);
+    out.seconds.push_back(s.record ? s.record->seconds : nan);
+    if (s.failure) out.failures.emplace(k, *s.failure);
+    else if (!s.record) missing.push_back(k);
+  }
+  requireStored(plan, level, missing);
+  return out;
 }
 
 void SampleStudy::finish(LevelResult& r) const {

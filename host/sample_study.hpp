@@ -10,6 +10,7 @@
 // a serial, MPI or sharded study gives the same statistics bit for bit.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -47,6 +48,12 @@ struct LevelResult {
   std::optional<double> diffMean, diffStd;
 };
 
+// One scalar output of some of a plan's jobs, read back from the store without their fields.
+struct ScalarSamples {
+  std::vector<double> values, seconds;          // one per job asked for; NaN for a failed one
+  std::map<std::size_t, std::string> failures;  // job index in the plan -> the component's message
+};
+
 // Fills diffMean/diffStd of every level but the last (levels whose moments were computed).
 void compareWithLast(std::vector<LevelResult>& levels, const ResultLayout& layout);
 
@@ -71,12 +78,23 @@ class SampleStudy {
   // Every sample of the plan from the store, and the statistics. RunError naming the samples that are
   // neither stored nor recorded as failed.
   LevelResult collect(LevelPlan plan, SampleRule rule, std::uint64_t level);
+  // Scalar output number `scalar` of the plan's jobs from `first` on, and their wall times: for a study
+  // that grows its plan round by round and needs one quantity of the new samples. RunError as collect().
+  ScalarSamples collectScalar(const LevelPlan& plan, std::uint64_t level, std::size_t scalar, std::size_t first);
 
   // Valid once runJobs or collect has run.
   const ResultLayout& layout() const { return layout_; }
   bool hasExactMoments() const { return exact_; }
 
  private:
+  // Job k from the store: its record, or the message of its failure; neither when it is not there.
+  struct Stored {
+    std::optional<SampleRecord> record;
+    std::optional<std::string> failure;
+  };
+  Stored stored(const LevelPlan& plan, std::size_t k, bool withFields) const;
+  // RunError naming the missing jobs, if any.
+  void requireStored(const LevelPlan& plan, std::uint64_t level, const std::vector<std::size_t>& missing) const;
   SampleRecord runSample(const Scene& scene);
   void describe(const LevelPlan& plan);
   std::uint64_t keyOf(const SampleJob& job, Scene& scene, std::string& definition) const;

@@ -321,6 +321,24 @@ const Setting* Scene::setting(std::string_view name) const {
   return nullptr;
 }
 
+const Variable& gridVariable(const ModelDescription& md, const char* name, const std::string& purpose) {
+  const Variable* v = md.find(name);
+  if (!v || v->causality != Causality::StructuralParameter || v->type != VarType::UInt64)
+    throw InputError(md.modelName + " has no structural UInt64 parameter " + name + " to " + purpose);
+  return *v;
+}
+
+Scene sceneWithGrid(const Scene& scene, const ModelDescription& md, std::uint64_t nx, std::uint64_t ny,
+                    const std::string& purpose) {
+  Scene out = scene;
+  for (const auto& [name, n] : {std::pair{"nx", nx}, std::pair{"ny", ny}}) {
+    const Variable& v = gridVariable(md, name, purpose);
+    std::erase_if(out.parameters, [&](const Setting& s) { return s.variable.name == name; });
+    out.parameters.push_back({v, std::vector<std::uint64_t>{n}});
+  }
+  return out;
+}
+
 Scene parseScene(std::string_view tomlText, const std::string& source, const ModelDescription& md,
                  const std::vector<ParameterOverride>& overrides) {
   const Context c(source, md);

@@ -60,6 +60,14 @@ inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{256} << 20;
 Scene readScene(const std::filesystem::path& file, const ModelDescription& md,
                 const std::vector<ParameterOverride>& overrides = {});
 
+// The structural UInt64 grid parameter `name` (nx or ny) of the model; InputError "<model> has no
+// structural UInt64 parameter <name> to <purpose>" when there is none.
+const Variable& gridVariable(const ModelDescription& md, const char* name, const std::string& purpose);
+// The scene on a grid of nx x ny points: its [parameters] nx and ny replaced (or added). InputError as
+// gridVariable.
+Scene sceneWithGrid(const Scene& scene, const ModelDescription& md, std::uint64_t nx, std::uint64_t ny,
+                    const std::string& purpose);
+
 // Text of a value for messages and HDF5 attributes: enumeration items by name, arrays as [a, b].
 std::string describeValues(const Setting& s, const ModelDescription& md);
 

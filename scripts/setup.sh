@@ -17,7 +17,7 @@ esac
 packages=(cmake g++ make pkg-config patchelf libeigen3-dev libsundials-dev libhdf5-dev zlib1g-dev libxml2-dev catch2
           libopenblas-dev libsuitesparse-dev libmumps-seq-dev libmetis-dev libzip-dev libtomlplusplus-dev libcli11-dev libpng-dev
           python3 python3-numpy gnuplot-nox libopenmpi-dev openmpi-bin python3-paraview python3-h5py
-          liblapacke-dev python3-venv python3-pip python3-setuptools python3-wheel python3-pytest python3-matplotlib)
+          liblapacke-dev libboost-dev python3-venv python3-pip python3-setuptools python3-wheel python3-pytest python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/errors.hpp"
+#include "hdf5_io.hpp"
 #include "learning/coarse_data_file.hpp"
 
 using namespace peristep::learning;
@@ -30,7 +31,9 @@ TEST_CASE("the committed MD data hold the sets of 003 Sec. 5 and the lattice con
   }
 }
 
-TEST_CASE("coarse-grained data survive an HDF5 round trip, and a missing file is a precise error", "[learning]") {
+namespace {
+
+CoarseDataFile smallCoarseData() {
   CoarseDataFile d;
   d.constants["C11_N_per_m"] = 417.757;
   CoarseDataSet set{CoarseGrid{2, 3, -1.0, -2.0, 0.5, 0.25, true}, 1e-3, 3.35, 5.0, {}};
@@ -44,6 +47,14 @@ TEST_CASE("coarse-grained data survive an HDF5 round trip, and a missing file is
     set.samples.push_back(f);
   }
   d.sets["x"] = set;
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("coarse-grained data survive an HDF5 round trip, and a missing file is a precise error", "[learning]") {
+  const CoarseDataFile d = smallCoarseData();
+  const CoarseDataSet& set = d.sets.at("x");
   const std::string path = (std::filesystem::temp_directory_path() / "peristep_learning_roundtrip.h5").string();
   writeCoarseData(path, d);
   const CoarseDataFile r = readCoarseData(path);
@@ -60,4 +71,22 @@ TEST_CASE("coarse-grained data survive an HDF5 round trip, and a missing file is
   CHECK(x.samples[1].u == set.samples[1].u);
   CHECK(x.samples[0].b == set.samples[0].b);
   CHECK_THROWS_AS(readCoarseData(path + ".missing"), peristep::InvalidInput);
+}
+
+TEST_CASE("coarse-grained data without a dataset of the layout are an HDF5 error that leaves nothing open",
+          "[learning]") {
+  const std::string path = (std::filesystem::temp_directory_path() / "peristep_learning_no_u.h5").string();
+  writeCoarseData(path, smallCoarseData());
+  {
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    CHECK(H5Ldelete(file, "x/u", H5P_DEFAULT) >= 0);
+    H5Fclose(file);
+  }
+  const ssize_t before = H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL);
+  CHECK_THROWS_WITH(readCoarseData(path), "HDF5: cannot open dataset u");
+  // The set's group and the file are closed on the way out (the group kept the file open before).
+  CHECK(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL) == before);
+  CHECK_THROWS_AS(readCoarseData(path), peristep::hdf5::Error);
+  std::filesystem::remove(path);
 }

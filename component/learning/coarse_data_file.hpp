@@ -23,6 +23,8 @@ struct CoarseDataFile {
   std::map<std::string, CoarseDataSet> sets;
 };
 
+// Both throw hdf5::Error (hdf5/hdf5_io.hpp) when HDF5 fails or a dataset's shape is not the layout's;
+// reading a file that cannot be opened throws InvalidInput.
 void writeCoarseData(const std::string& path, const CoarseDataFile& data);
 CoarseDataFile readCoarseData(const std::string& path);
 

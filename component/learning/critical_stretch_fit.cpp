@@ -1,7 +1,10 @@
 #include "learning/critical_stretch_fit.hpp"
 
 #include <algorithm>
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "core/errors.hpp"
 
@@ -18,21 +21,18 @@ CriticalStretchFit fitCriticalStretch(const std::function<double(double)>& loss,
     if (fit.scanLoss.back() < fit.scanLoss[best]) best = static_cast<std::size_t>(i);
   }
   fit.evaluations = points;
-  // Golden sections on the bracket around the best scan point.
-  double a = fit.scanS0[best > 0 ? best - 1 : 0], b = fit.scanS0[std::min<std::size_t>(best + 1, points - 1)];
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double c = b - g * (b - a), d = a + g * (b - a), fc = loss(c), fd = loss(d);
-  fit.evaluations += 2;
-  while (b - a > 1e-7 * (std::abs(a) + std::abs(b))) {
-    if (fc < fd) {
-      b = d, d = c, fd = fc, c = b - g * (b - a), fc = loss(c);
-    } else {
-      a = c, c = d, fc = fd, d = a + g * (b - a), fd = loss(d);
-    }
-    ++fit.evaluations;
-  }
-  fit.s0 = 0.5 * (a + b);
-  fit.loss = loss(fit.s0);
+  // Brent's method (Boost.Math) on the bracket around the best scan point: parabolic steps where the loss is
+  // smooth, golden sections where it is not (docs/decisions/0024-brent-for-the-critical-stretch.md). Half
+  // the digits of a double: the most the method's tolerance may ask of a minimum.
+  const double a = fit.scanS0[best > 0 ? best - 1 : 0], b = fit.scanS0[std::min<std::size_t>(best + 1, points - 1)];
+  std::uintmax_t iterations = 200;
+  const auto [s0, value] = boost::math::tools::brent_find_minima(
+      [&](double s) {
+        ++fit.evaluations;
+        return loss(s);
+      },
+      a, b, std::numeric_limits<double>::digits / 2, iterations);
+  fit.s0 = s0, fit.loss = value;
   if (fit.scanLoss[best] < fit.loss) fit.s0 = fit.scanS0[best], fit.loss = fit.scanLoss[best];
   return fit;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The 1-D minimization of the damage-criterion step (003 Algorithm 1 (v); 003 uses bisection): a uniform scan,
-// then golden sections around the best scan point, for any loss of s0 alone (the equation residual 003:(42),
+// then Brent's method around the best scan point, for any loss of s0 alone (the equation residual 003:(42),
 // learning/fracture_residual.hpp, or the prediction error of learning/prediction_window_loss.hpp).
 #include <functional>
 #include <limits>
@@ -16,7 +16,8 @@ struct CriticalStretchFit {
   double lower = std::numeric_limits<double>::quiet_NaN(), upper = lower;
 };
 
-// Minimum of loss(s0) on [lo, hi]: a uniform scan of `points`, then golden sections around the best point.
+// Minimum of loss(s0) on [lo, hi]: a uniform scan of `points`, then Brent's method (Boost.Math) between the
+// best point's neighbours. `evaluations` counts every call of the loss.
 CriticalStretchFit fitCriticalStretch(const std::function<double(double)>& loss, double lo, double hi,
                                       int points = 60);
 
