@@ -13,7 +13,7 @@
 #include "fmi/log_categories.hpp"
 #include "fmi/variables.hpp"
 #include "model_summary.hpp"
-#include "peristep.h"
+#include "fmi/model_identity.hpp"
 
 using namespace peristep::fmi;
 
@@ -145,7 +145,7 @@ void writePage(const char* path) {
          "vertical-align:top}</style>\n</head>\n<body>\n<h1>PeriStep "
       << PERISTEP_VERSION << "</h1>\n<p>" << escaped(kModelSummary)
       << ".</p>\n<p>An FMI 3.0 Co-Simulation FMU for x86_64 Linux (model identifier <code>"
-      << PERISTEP_MODEL_IDENTIFIER << "</code>, instantiation token <code>" << PERISTEP_INSTANTIATION_TOKEN
+      << kModelIdentifier << "</code>, instantiation token <code>" << kInstantiationToken
       << "</code>). This page is generated from the variable table that modelDescription.xml is generated from."
          " References such as 000:(5.2) name an equation of Fan et al., A meshfree peridynamic model for brittle "
          "fracture in randomly heterogeneous materials, CMAME 399 (2022) 115340; 001 is Jha and Lipton, Numerical "

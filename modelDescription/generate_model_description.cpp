@@ -12,7 +12,7 @@
 #include "fmi/log_categories.hpp"
 #include "fmi/variables.hpp"
 #include "model_summary.hpp"
-#include "peristep.h"
+#include "fmi/model_identity.hpp"
 
 using namespace peristep::fmi;
 
@@ -94,7 +94,7 @@ void writeModelDescription(const char* path) {
   w.start("fmiModelDescription");
   w.attribute("fmiVersion", "3.0");
   w.attribute("modelName", "PeriStep");
-  w.attribute("instantiationToken", PERISTEP_INSTANTIATION_TOKEN);
+  w.attribute("instantiationToken", kInstantiationToken);
   w.attribute("description", kModelSummary);
   w.attribute("version", PERISTEP_VERSION);
   w.attribute("author", "The PeriStep developers");
@@ -109,7 +109,7 @@ void writeModelDescription(const char* path) {
   w.attribute("variableNamingConvention", "flat");
 
   w.start("CoSimulation");
-  w.attribute("modelIdentifier", PERISTEP_MODEL_IDENTIFIER);
+  w.attribute("modelIdentifier", kModelIdentifier);
   w.attribute("canBeInstantiatedOnlyOncePerProcess", "false");
   w.attribute("canGetAndSetFMUState", "true");
   w.attribute("canSerializeFMUState", "true");

@@ -59,6 +59,14 @@ struct EnumerationType {
   std::string_view cPrefix;  // e.g. PERISTEP_GRIP_ for the items of PeriStep.Grip
 };
 
+// Short names for declaration tables: `using namespace peristep::declaration_names;` in the file that declares.
+namespace declaration_names {
+using C = Causality;
+using V = Variability;
+using I = Initial;
+using T = VarType;
+}  // namespace declaration_names
+
 // A unit as powers of the SI base units (<UnitDefinitions>).
 struct UnitDefinition {
   std::string_view name;

@@ -9,8 +9,8 @@
 
 #include "core/errors.hpp"
 #include "fmi/instance.hpp"
+#include "fmi/model_identity.hpp"
 #include "fmi3Functions.h"
-#include "peristep.h"
 
 using peristep::InvalidInput;
 using peristep::require;
@@ -142,9 +142,9 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String ins
   try {
     if (!instanceName || blank(instanceName)) return refuse("instanceName must be a non-empty string");
     if (!instantiationToken) return refuse("instantiationToken is NULL");
-    if (std::strcmp(instantiationToken, PERISTEP_INSTANTIATION_TOKEN) != 0)
+    if (std::string_view(instantiationToken) != kInstantiationToken)
       return refuse(std::string("instantiationToken ") + instantiationToken + " does not match this PeriStep.so (" +
-                    PERISTEP_INSTANTIATION_TOKEN + "): modelDescription.xml comes from another build");
+                    std::string(kInstantiationToken) + "): modelDescription.xml comes from another build");
     if (eventModeUsed) return refuse("eventModeUsed = true, but PeriStep has no Event Mode (hasEventMode = false)");
     if (nRequiredIntermediateVariables > 0)
       return refuse("requiredIntermediateVariables: PeriStep offers no intermediate update");

@@ -5,7 +5,7 @@
 
 #include "core/checksum.hpp"
 
-#include "peristep.h"
+#include "fmi/model_identity.hpp"
 
 namespace peristep::fmi {
 
@@ -13,9 +13,6 @@ namespace {
 
 constexpr std::uint32_t kMagic = 0x53505350;  // "PSPS"
 constexpr std::uint32_t kFormat = 4;  // 4: the dynamic state holds its force-evaluation count
-
-// The token identifies the variable table the state was written against.
-constexpr std::string_view kToken = PERISTEP_INSTANTIATION_TOKEN;
 
 bool knownState(std::uint32_t s) {
   return s == Instantiated || s == ConfigurationMode || s == InitializationMode || s == StepMode || s == Terminated;
@@ -27,7 +24,8 @@ std::vector<std::uint8_t> serialize(const Snapshot& s) {
   ByteWriter out;
   out.put(kMagic);
   out.put(kFormat);
-  out.putArray(std::span<const char>(kToken.data(), kToken.size()));
+  // The instantiation token identifies the variable table the state was written against.
+  out.putArray(std::span<const char>(kInstantiationToken.data(), kInstantiationToken.size()));
   out.put<std::uint32_t>(s.state);
   out.put(s.time);
   out.put<std::uint8_t>(s.stopTimeDefined);
@@ -60,7 +58,7 @@ Snapshot deserialize(std::span<const std::uint8_t> bytes) {
   in.get<std::uint32_t>();  // magic and format, checked above
   in.get<std::uint32_t>();
   const auto token = in.getArray<char>();
-  if (std::string_view(token.data(), token.size()) != kToken)
+  if (std::string_view(token.data(), token.size()) != kInstantiationToken)
     ByteReader::corrupt("it was written by another PeriStep build (instantiation token differs)");
   Snapshot s;
   const auto state = in.get<std::uint32_t>();

@@ -1,5 +1,6 @@
 #pragma once
-// The component's identity as an importer sees it (api/peristep.h is generated with these).
+// The component's identity as an importer sees it, defined once: the FMI functions, FMU states,
+// modelDescription.xml, the documentation and the generated api/peristep.h take it from here.
 #include <string_view>
 
 namespace peristep::fmi {

@@ -139,16 +139,10 @@ class GamutBarRunner final : public Runner {
   CyclicFit fit_;
 };
 
-using C = Causality;
-using V = Variability;
-using I = Initial;
-using T = VarType;
+using namespace declaration_names;
 constexpr ValueReference kMaterial = 110, kGrid = 111, kBonds = 112, kScatterDenominator = 113, kWeibullShape = 114,
                          kProtocol = 115, kStress = 120, kStrain = 121, kCyclicExponent = 122,
                          kCyclicCoefficient = 123;
-
-std::vector<ValueReference> onLoadFactor() { return {shared_vr::loadFactor}; }
-std::vector<ValueReference> onNoInput() { return {}; }
 
 const GamutBarRunner& bar(const Runner& r) { return static_cast<const GamutBarRunner&>(r); }
 

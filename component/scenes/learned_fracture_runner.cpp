@@ -14,6 +14,7 @@
 #include "learning/model_units.hpp"
 #include "scenes/scene_declaration.hpp"
 #include "scenes/scene_runner.hpp"
+#include "scenes/shared_variables.hpp"
 
 namespace peristep {
 namespace {
@@ -142,13 +143,8 @@ class LearnedFractureRunner final : public Runner {
   std::size_t frame_ = 0;
 };
 
-using C = Causality;
-using V = Variability;
-using I = Initial;
-using T = VarType;
+using namespace declaration_names;
 constexpr ValueReference kSample = 140, kCriticalStretch = 141, kErrorDisplacement = 142, kErrorDamage = 143;
-
-std::vector<ValueReference> onNoInput() { return {}; }
 
 const LearnedFractureRunner& learned(const Runner& r) { return static_cast<const LearnedFractureRunner&>(r); }
 

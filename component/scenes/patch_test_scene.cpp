@@ -34,9 +34,10 @@ SpecimenSpec patchSpecimen(const SceneParameters& p) {
 
 class PatchTestRunner final : public Runner {
  public:
-  explicit PatchTestRunner(const SceneParameters& p) : gradient_(patchSpecimen(p).collarGradient) {
+  explicit PatchTestRunner(const SceneParameters& p) {
     SceneParameters q = p;
     q.specimen = patchSpecimen(p);
+    gradient_ = q.specimen.collarGradient;
     elastic_ = makeElasticSpecimenRunner(q);
   }
   const PointCloud& cloud() const override { return elastic_->cloud(); }
@@ -76,10 +77,7 @@ void validatePatch(const SceneParameters& p) {
   validate(patchSpecimen(p), p.grid);
 }
 
-using C = Causality;
-using V = Variability;
-using I = Initial;
-using T = VarType;
+using namespace declaration_names;
 
 Variable strain(std::string_view name, ValueReference vr, std::string_view description, std::string_view start) {
   return {.name = name, .vr = vr, .type = T::Float64, .causality = C::Parameter, .variability = V::Fixed,
@@ -105,7 +103,7 @@ SceneDeclaration patchTestScene() {
                      .variability = V::Continuous, .initial = I::Calculated,
                      .description = "patchTest scene: max |u - u_affine| / max |u_affine| over the domain points; 0 in "
                                     "the other scenes",
-                     .dependencies = std::vector<ValueReference>{shared_vr::loadFactor}}},
+                     .dependencies = onLoadFactor()}},
       .outputs = {{kPatchError, [](const Runner& r) { return static_cast<const PatchTestRunner&>(r).patchError(); }}},
       .validate = validatePatch,
       .make = [](const SceneParameters& p) -> std::unique_ptr<Runner> { return std::make_unique<PatchTestRunner>(p); },

@@ -7,10 +7,7 @@ namespace peristep {
 
 namespace {
 
-using C = Causality;
-using V = Variability;
-using I = Initial;
-using T = VarType;
+using namespace declaration_names;
 
 constexpr ValueReference kModes = shared_vr::nModes, kCracks = 4, kBoxes = 149;
 
@@ -19,9 +16,6 @@ std::vector<ValueReference> image() { return imageDimensions(); }
 // Which input drives an output (component/scenes/*_runner.cpp): loadFactor the elastic scenes, the KL
 // plate, the dynamic scenes 5-7 and the specimen; loadDisplacement the glass-ceramic plate (a specimen
 // preset, so the specimen's outputs depend on both).
-std::vector<ValueReference> onBothLoads() { return {shared_vr::loadFactor, shared_vr::loadDisplacement}; }
-std::vector<ValueReference> onLoadFactor() { return {shared_vr::loadFactor}; }
-std::vector<ValueReference> onNoInput() { return {}; }  // fixed once the scene is built
 
 std::vector<Variable> makeTable() {
   return {

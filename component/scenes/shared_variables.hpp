@@ -17,6 +17,12 @@ inline constexpr ValueReference nx = 1, ny = 2, nModes = 3, scene = 10, loadFact
 // Images are [ny][nx]: the outer dimension is ny (FMI arrays are row-major).
 inline std::vector<ValueReference> imageDimensions() { return {shared_vr::ny, shared_vr::nx}; }
 
+// The inputs an output depends on (Variable::dependencies): loadFactor, both loads, or none (fixed once the
+// scene is built).
+inline std::vector<ValueReference> onLoadFactor() { return {shared_vr::loadFactor}; }
+inline std::vector<ValueReference> onBothLoads() { return {shared_vr::loadFactor, shared_vr::loadDisplacement}; }
+inline std::vector<ValueReference> onNoInput() { return {}; }
+
 const std::vector<Variable>& sharedVariables();
 const std::vector<EnumerationType>& sharedEnumerations();
 const std::vector<UnitDefinition>& unitDefinitions();
